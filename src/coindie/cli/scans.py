@@ -1,0 +1,1 @@
+"""Commands that look at one scan: ``info`` and ``render`` (wired once the readers exist)."""
