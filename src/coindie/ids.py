@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
-from enum import Enum
+from enum import StrEnum
 
 _COIN_ID = re.compile(r"^L(?P<number>\d+)(?P<face>[DR])$", re.IGNORECASE)
 
@@ -18,7 +18,7 @@ _COIN_ID = re.compile(r"^L(?P<number>\d+)(?P<face>[DR])$", re.IGNORECASE)
 CANONICAL_DIGITS = 4
 
 
-class Face(str, Enum):
+class Face(StrEnum):
     """Which face of the coin a scan shows."""
 
     OBVERSE = "D"
