@@ -1,0 +1,122 @@
+"""Shared geometry of the registration methods: input checks, point clouds with a search tree, rigid fits."""
+
+from __future__ import annotations
+
+import hashlib
+from dataclasses import dataclass
+from functools import cached_property
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+from scipy.spatial import cKDTree
+from scipy.spatial.transform import Rotation
+
+from coindie.errors import InvalidScanError
+from coindie.preprocess.frames import rigid
+from coindie.scan import Scan
+
+FloatArray = NDArray[np.float64]
+IntArray = NDArray[np.int64]
+BoolArray = NDArray[np.bool_]
+
+#: Fewer points than this cannot define a rigid transform with any redundancy.
+MIN_POINTS = 10
+#: Queries of fewer points run on one thread (scipy starts new threads on every parallel query: ~1 ms).
+_PARALLEL_QUERY = 20_000
+
+
+def as_scan(data: Scan | ArrayLike, role: str) -> Scan:
+    """A Scan from a Scan or an (N, 3) array; a clear InvalidScanError naming the role otherwise."""
+    if isinstance(data, Scan):
+        scan = data
+    else:
+        try:
+            scan = Scan(points=np.asarray(data, dtype=np.float64), id=role)
+        except InvalidScanError as error:
+            raise InvalidScanError(f"the {role} cloud is unusable: {error.problem}") from None
+        except (TypeError, ValueError) as error:
+            raise InvalidScanError(f"the {role} cloud is not an (N, 3) array of numbers: {error}") from None
+    if scan.n_points < MIN_POINTS:
+        raise InvalidScanError(
+            f"the {role} cloud has {scan.n_points} points; registration needs at least {MIN_POINTS}",
+            scan.path,
+        )
+    return scan
+
+
+def canonical_order(scan: Scan) -> Scan:
+    """The scan with its points sorted by (x, y, z): every method then sees the same input whatever the
+    order of the file, so that a permutation of the points cannot change a result."""
+    order = np.lexsort(scan.points.T[::-1])
+    return scan.subset(order)
+
+
+def with_normals(scan: Scan) -> Scan:
+    """The scan itself if it has normals; otherwise normals by local PCA, turned to the face's up side."""
+    if scan.normals is not None:
+        return scan
+    from coindie.preprocess.normals import estimate_normals
+    from coindie.preprocess.orientation import up_axis
+
+    return scan.with_normals(estimate_normals(scan.points, toward=up_axis(scan.points)))
+
+
+def content_rng(points: FloatArray, seed: int) -> np.random.Generator:
+    """A random generator seeded by ``seed`` and the points themselves: a cloud gets the same random draws
+    whether it is the source or the target of a pair, so swapping them swaps the draws."""
+    digest = hashlib.blake2b(np.ascontiguousarray(points).tobytes(), digest_size=8).digest()
+    return np.random.default_rng([seed, int.from_bytes(digest, "little")])
+
+
+@dataclass(frozen=True, eq=False)
+class Cloud:
+    """Points and unit normals (mm) with a k-d tree built on first use."""
+
+    points: FloatArray
+    normals: FloatArray
+
+    @classmethod
+    def of(cls, scan: Scan) -> Cloud:
+        scan = with_normals(scan)
+        assert scan.normals is not None
+        return cls(scan.points, scan.normals)
+
+    @cached_property
+    def tree(self) -> cKDTree:
+        return cKDTree(self.points)
+
+    def subset(self, index: IntArray) -> Cloud:
+        return Cloud(self.points[index], self.normals[index])
+
+    def nearest(self, points: FloatArray, max_distance: float) -> tuple[FloatArray, IntArray]:
+        """Distance to and index of the nearest point of this cloud (inf and len(points) beyond
+        ``max_distance``)."""
+        workers = -1 if len(points) >= _PARALLEL_QUERY else 1
+        distances, index = self.tree.query(points, distance_upper_bound=max_distance, workers=workers)
+        return distances, index
+
+
+def transform_points(T: FloatArray, points: FloatArray) -> FloatArray:
+    return points @ T[:3, :3].T + T[:3, 3]
+
+
+def fit_rigid(src: FloatArray, dst: FloatArray, weights: FloatArray | None = None) -> FloatArray:
+    """``T_dst_src`` minimising the (weighted) squared distances between matched points (Kabsch)."""
+    w = np.ones(len(src)) if weights is None else weights
+    src_mean = np.average(src, axis=0, weights=w)
+    dst_mean = np.average(dst, axis=0, weights=w)
+    R = fit_rotation(src - src_mean, dst - dst_mean, w)
+    return rigid(R, dst_mean - R @ src_mean)
+
+
+def fit_rotation(src: FloatArray, dst: FloatArray, weights: FloatArray | None = None) -> FloatArray:
+    """R minimising sum w_i ||dst_i - R src_i||^2 over rotations (vectors, no translation)."""
+    if len(src) < 2:
+        return np.eye(3)
+    rotation, _ = Rotation.align_vectors(dst, src, weights=weights)
+    return rotation.as_matrix()
+
+
+def small_rotation(omega: FloatArray) -> FloatArray:
+    """The rotation matrix of a rotation vector (rad)."""
+    return Rotation.from_rotvec(omega).as_matrix()

@@ -1,0 +1,134 @@
+"""Declared parameters: validation messages, generated invalid-value checks for every method, registry."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from coindie.errors import ParameterError
+from coindie.registration import (
+    PointToPlaneICP,
+    TeaserSolver,
+    get_method,
+    list_methods,
+    method_info,
+    register_method,
+)
+from coindie.registration.params import Param
+
+
+def test_the_message_names_the_parameter_the_part_the_range_and_the_value() -> None:
+    with pytest.raises(ParameterError) as error:
+        TeaserSolver(noise_bound=-1)
+    assert (
+        str(error.value)
+        == "The 'noise_bound' parameter of teaser must be a float in the range (0, inf) mm. Got -1."
+    )
+
+
+def test_choices_and_kinds_in_messages() -> None:
+    with pytest.raises(
+        ParameterError, match=r"'init' parameter of icp must be one of 'identity', 'centroids'\. Got 'x'"
+    ):
+        PointToPlaneICP(init="x")
+    with pytest.raises(ParameterError, match=r"must be an int in the range \[1, inf\)\. Got 2\.5"):
+        PointToPlaneICP(max_iterations=2.5)
+    with pytest.raises(ParameterError, match="Got True"):
+        PointToPlaneICP(max_iterations=True)  # a bool is not a count
+    assert PointToPlaneICP(max_iterations=3.0).max_iterations == 3  # an integral float is accepted as an int
+    assert PointToPlaneICP(max_iterations=np.int64(7)).max_iterations == 7  # and NumPy scalars
+    assert TeaserSolver(noise_bound=np.float32(0.25)).noise_bound == 0.25
+    with pytest.raises(ParameterError, match="Got inf"):
+        PointToPlaneICP(max_iterations=float("inf"))
+    assert isinstance(TeaserSolver(noise_bound=1).noise_bound, float)
+
+
+def outside_values(p: Param) -> list[object]:
+    """Values the declaration must refuse: just outside each finite bound, NaN, and the wrong kind."""
+    if p.choices is not None:
+        return ["no-such-choice", 1]
+    if p.kind is bool:
+        return ["yes", 1]
+    values: list[object] = ["text", float("nan")]
+    step = 1 if p.kind is int else 1e-9
+    if math.isfinite(p.low):
+        values.append(p.low if p.low_open else p.low - step)
+    if math.isfinite(p.high):
+        values.append(p.high if p.high_open else p.high + step)
+    else:
+        values.append(float("inf"))
+    return values
+
+
+CASES = [
+    (method, key, value)
+    for method in list_methods()
+    for key, p in method_info(method).params().items()
+    for value in outside_values(p)
+]
+
+
+@pytest.mark.parametrize(("method", "key", "value"), CASES, ids=[f"{m}-{k}-{v!r}" for m, k, v in CASES])
+def test_every_declared_parameter_refuses_values_outside_its_declaration(
+    method: str, key: str, value
+) -> None:
+    part, name = key.split(".")
+    with pytest.raises(ParameterError, match=rf"The '{name}' parameter of {part} must be .* Got "):
+        get_method(method, **{key: value})
+
+
+@pytest.mark.parametrize("method", list_methods())
+def test_defaults_are_valid_and_recorded_in_full(method: str) -> None:
+    info = method_info(method)
+    registrar = get_method(method)
+    assert registrar.params == {key: p.default for key, p in info.params().items()}
+    assert registrar.name == method
+    assert info.summary
+
+
+def test_short_names_resolve_when_unique_and_are_refused_when_ambiguous() -> None:
+    registrar = get_method("fpfh+teaser+icp", noise_bound=0.3, **{"refine.max_iterations": 5})
+    assert registrar.params["teaser.noise_bound"] == 0.3
+    assert registrar.params["refine.max_iterations"] == 5
+    with pytest.raises(
+        ParameterError, match="ambiguous: say one of teaser.max_iterations, refine.max_iterations"
+    ):
+        get_method("fpfh+teaser+icp", max_iterations=5)
+    with pytest.raises(
+        ParameterError, match="Method 'icp' has no parameter 'noise_bound'. Its parameters: icp.max"
+    ):
+        get_method("icp", noise_bound=0.3)
+
+
+def test_unknown_method_lists_the_known_ones() -> None:
+    with pytest.raises(
+        ParameterError, match="Unknown registration method 'teaser'. Known methods: icp, rs-icp"
+    ):
+        get_method("teaser")
+
+
+def test_command_line_text_is_parsed_by_the_declaration() -> None:
+    info = method_info("fpfh+ransac+icp")
+    assert info.parse("distance", "0.25") == ("ransac.distance", 0.25)
+    assert info.parse("n_points", "250") == ("matcher.n_points", 250)
+    assert info.parse("check.max_residual", "1e-2") == ("check.max_residual", 0.01)
+    with pytest.raises(
+        ParameterError, match="The 'n_points' parameter of matcher must be an int .* Got 'many'"
+    ):
+        info.parse("n_points", "many")
+    assert method_info("icp").parse("init", "centroids") == ("icp.init", "centroids")
+
+
+def test_parts_of_a_method_need_distinct_names() -> None:
+    with pytest.raises(ValueError, match="distinct names"):
+        register_method("twice", lambda **parts: None, parts=(TeaserSolver, TeaserSolver), summary="x")
+    assert "twice" not in list_methods()
+
+
+def test_every_method_lists_its_acceptance_check() -> None:
+    for method in list_methods():
+        params = method_info(method).params()
+        assert {"check.overlap_distance", "check.min_fitness", "check.max_residual"} <= set(params)
+        assert all(p.doc for p in params.values())
