@@ -21,7 +21,16 @@ from coindie.synth.design import DieParams, Family, make_die, make_type
 from coindie.synth.face import FaceSpec, make_face, sample_face_spec
 from coindie.synth.life import LifeParams, die_height
 from coindie.synth.scanner import ScanParams
-from coindie.synth.strike import Bend, Chunk, DoubleStrike, Flaw, StrikeParams, WeakZone, outline_radius
+from coindie.synth.strike import (
+    Bend,
+    Chunk,
+    DoubleStrike,
+    Flaw,
+    StrikeParams,
+    WeakZone,
+    outline_radius,
+    sample_strike,
+)
 
 QUIET_SCAN = ScanParams(spacing_mm=0.1, noise_mm=(0.0, 0.0), normal_noise_deg=0.0)
 #: Ordinary coins: every rare accident switched off.
@@ -333,6 +342,17 @@ def test_a_bent_coin_folds_beyond_its_line_and_not_before(calm_die):
     expected = (p0[far, 0] - 2.5) * np.sin(np.radians(10.0))
     assert np.median(np.abs(lift - expected)) < 0.1
     assert np.allclose(np.linalg.norm(n1, axis=1), 1.0)
+
+
+def test_sampled_bends_turn_the_smaller_side_so_the_die_truth_holds_for_most_of_the_face():
+    rng = np.random.default_rng(0)
+    bends = [sample_strike(rng, StrikeParams(bend_probability=1.0)) for _ in range(200)]
+    for spec in bends:
+        r, d = spec.flan_radius_mm, spec.bend.distance_mm
+        # Area of the disc segment beyond the fold line, as a share of the disc.
+        segment = r * r * np.arccos(d / r) - d * np.sqrt(r * r - d * d)
+        assert 0 < d < r
+        assert segment / (np.pi * r * r) < 0.4
 
 
 # --- circulation -----------------------------------------------------------------------------------------

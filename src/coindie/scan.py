@@ -78,18 +78,34 @@ class Scan:
     def transformed(self, T_new_old: FloatArray) -> Scan:
         """The same scan with points and normals mapped by the rigid transform ``T_new_old``."""
         T = np.asarray(T_new_old, dtype=np.float64)
+        if T.shape != (4, 4) or not np.isfinite(T).all():
+            raise InvalidScanError(f"cannot transform a scan by a non-finite or non-4x4 matrix {T.shape}")
         R, t = T[:3, :3], T[:3, 3]
         normals = None if self.normals is None else self.normals @ R.T
-        return replace(self, points=self.points @ R.T + t, normals=normals)
+        points = self.points @ R.T + t
+        if not np.isfinite(points).all():  # finite inputs can still overflow
+            return replace(self, points=points, normals=normals)  # validation names the problem
+        return self._checked_already(points=points, normals=normals)
 
     def subset(self, index: NDArray[np.integer] | NDArray[np.bool_]) -> Scan:
         """The scan restricted to some points (an index array or a boolean mask)."""
-        return replace(
-            self,
-            points=self.points[index],
+        points = self.points[index]
+        if len(points) == 0:
+            raise InvalidScanError("the subset has zero points", self.path)
+        return self._checked_already(
+            points=points,
             normals=None if self.normals is None else self.normals[index],
             colors=None if self.colors is None else self.colors[index],
         )
+
+    def _checked_already(self, **changes: object) -> Scan:
+        """A copy with ``changes`` that keep a valid scan valid (rows of it, a rigid motion of it),
+        without the constructor's checks: they cost more than the change on large scans."""
+        new = object.__new__(Scan)
+        new.__dict__.update(self.__dict__)
+        for name, value in changes.items():
+            object.__setattr__(new, name, np.ascontiguousarray(value) if value is not None else None)
+        return new
 
     def with_normals(self, normals: FloatArray) -> Scan:
         return replace(self, normals=normals)

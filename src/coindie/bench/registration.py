@@ -127,7 +127,7 @@ def run_pair(job: PairJob) -> dict[str, object]:
     }  # fmt: skip
 
 
-@lru_cache(maxsize=32)
+@lru_cache(maxsize=64)
 def _grid_scan(path: str) -> Scan:
     from coindie.io import read_scan
     from coindie.preprocess import grid_sample
@@ -203,8 +203,9 @@ def _jobs(
                     tuple(T_turn.ravel()),
                 )  # fmt: skip
             )
-    # Group by source face so that each worker's scan cache is reused.
-    return sorted(jobs, key=lambda j: (j.source, j.target, j.method))
+    # Group by target face: each worker then reuses the target's per-face work (search tree, descriptors,
+    # relief images) as in an all-pairs study, while every source is new (turned for its pair).
+    return sorted(jobs, key=lambda j: (j.target, j.method, j.source))
 
 
 def _results(jobs: list[PairJob], workers: int) -> Iterator[dict[str, object]]:

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import hashlib
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import cached_property
 
 import numpy as np
@@ -44,11 +44,23 @@ def as_scan(data: Scan | ArrayLike, role: str) -> Scan:
     return scan
 
 
+def canonical_permutation(points: FloatArray) -> IntArray:
+    """The order that sorts points by (x, y, z): every method then sees the same input whatever the
+    order of the file, so that a permutation of the points cannot change a result.
+
+    Sorting by x alone is 4x faster than a lexicographic sort and gives the same order when no two points
+    share an x (the usual case for scanned coordinates); ties fall back to the full sort.
+    """
+    order = np.argsort(points[:, 0], kind="stable")
+    x = points[order, 0]
+    if np.any(x[1:] == x[:-1]):
+        order = np.lexsort(points.T[::-1])
+    return order
+
+
 def canonical_order(scan: Scan) -> Scan:
-    """The scan with its points sorted by (x, y, z): every method then sees the same input whatever the
-    order of the file, so that a permutation of the points cannot change a result."""
-    order = np.lexsort(scan.points.T[::-1])
-    return scan.subset(order)
+    """The scan with its points in :func:`canonical_permutation` order."""
+    return scan.subset(canonical_permutation(scan.points))
 
 
 def with_normals(scan: Scan) -> Scan:
@@ -59,6 +71,14 @@ def with_normals(scan: Scan) -> Scan:
     from coindie.preprocess.orientation import up_axis
 
     return scan.with_normals(estimate_normals(scan.points, toward=up_axis(scan.points)))
+
+
+def content_key(*arrays: FloatArray) -> bytes:
+    """A 16-byte digest of the arrays' contents (SHA-256: about 0.6 ms per MB with CPU support)."""
+    digest = hashlib.sha256()
+    for array in arrays:
+        digest.update(np.ascontiguousarray(array).tobytes())
+    return digest.digest()[:16]
 
 
 def content_rng(points: FloatArray, seed: int) -> np.random.Generator:
@@ -74,6 +94,7 @@ class Cloud:
 
     points: FloatArray
     normals: FloatArray
+    known_key: bytes | None = field(default=None, repr=False)  # a content key already computed
 
     @classmethod
     def of(cls, scan: Scan) -> Cloud:
@@ -81,9 +102,23 @@ class Cloud:
         assert scan.normals is not None
         return cls(scan.points, scan.normals)
 
+    @classmethod
+    def canonical(cls, scan: Scan, key: bytes | None = None) -> Cloud:
+        """The scan's points and normals (estimated when missing) in canonical order; ``key``, when
+        given, identifies the scan's content (see :attr:`key`)."""
+        scan = with_normals(scan)
+        assert scan.normals is not None
+        order = canonical_permutation(scan.points)
+        return cls(np.take(scan.points, order, axis=0), np.take(scan.normals, order, axis=0), key)
+
     @cached_property
     def tree(self) -> cKDTree:
         return cKDTree(self.points)
+
+    @cached_property
+    def key(self) -> bytes:
+        """A digest of the content: equal clouds have equal keys (per-face caches are keyed by it)."""
+        return self.known_key if self.known_key is not None else content_key(self.points, self.normals)
 
     def subset(self, index: IntArray) -> Cloud:
         return Cloud(self.points[index], self.normals[index])

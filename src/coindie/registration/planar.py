@@ -23,7 +23,7 @@ x = x0 + j * pixel, y = y0 + i * pixel.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 from numpy.typing import NDArray
@@ -61,12 +61,6 @@ def high_pass(values: FloatImage, mask: BoolImage, sigma_px: float) -> FloatImag
     return np.where(mask, values - low, 0.0)
 
 
-def soft_window(mask: BoolImage, erode_px: int, soften_px: float) -> FloatImage:
-    """A taper that is 1 well inside the footprint and falls smoothly to 0 at its border."""
-    core = ndimage.binary_erosion(mask, iterations=max(erode_px, 0)) if erode_px > 0 else mask
-    return ndimage.gaussian_filter(core.astype(np.float64), soften_px)
-
-
 def polar_log_spectrum(image: FloatImage, n_angles: int = 360, r_min_px: int = 3) -> FloatImage:
     """log(1 + |FFT|) of a square image resampled on (radius, angle in [0, pi)), each radius centred.
 
@@ -100,31 +94,69 @@ def rotation_candidates(
     return [float(p) * np.pi / n_angles for p in peaks]
 
 
+@dataclass(frozen=True, eq=False)
+class FixedSpectra:
+    """The Fourier transforms of the fixed image that masked NCC needs, for moving images of one shape:
+    computed once per target face and reused by every source (half of the transforms of a correlation)."""
+
+    shape: tuple[int, int]
+    fixed_shape: tuple[int, int]
+    moving_shape: tuple[int, int]
+    F_f: NDArray[np.complex128]
+    F_fm: NDArray[np.complex128]
+    F_ff: NDArray[np.complex128]
+
+    @classmethod
+    def of(cls, fixed: FloatImage, fixed_mask: BoolImage, moving_shape: tuple[int, ...]) -> FixedSpectra:
+        sizes = zip(fixed.shape, moving_shape, strict=True)
+        shape = tuple(fft.next_fast_len(a + b - 1, real=True) for a, b in sizes)
+        fm = fixed_mask.astype(np.float64)
+        f = fixed * fm
+        return cls(
+            (shape[0], shape[1]),
+            (fixed.shape[0], fixed.shape[1]),
+            (moving_shape[0], moving_shape[1]),
+            fft.rfft2(f, shape),
+            fft.rfft2(fm, shape),
+            fft.rfft2(f * f, shape),
+        )
+
+
 def masked_ncc(
-    fixed: FloatImage, moving: FloatImage, fixed_mask: BoolImage, moving_mask: BoolImage, min_overlap: float
+    fixed: FloatImage | FixedSpectra,
+    moving: FloatImage,
+    fixed_mask: BoolImage | None,
+    moving_mask: BoolImage,
+    min_overlap: float,
 ) -> tuple[FloatImage, FloatImage]:
     """Masked normalised cross-correlation for every integer shift (Padfield 2012), and the overlaps.
 
     Entry [k] of the full correlation (shape fixed + moving - 1) compares fixed[n] with
     moving[n + (moving.shape - 1 - k)]. Shifts whose overlap is below ``min_overlap`` pixels score 0.
+    ``fixed`` may be given as its precomputed :class:`FixedSpectra` (``fixed_mask`` is then unused).
     """
-    shape = [fft.next_fast_len(a + b - 1, real=True) for a, b in zip(fixed.shape, moving.shape, strict=True)]
-    fm, mm = fixed_mask.astype(np.float64), moving_mask[::-1, ::-1].astype(np.float64)
-    f, m = fixed * fm, moving[::-1, ::-1] * mm
+    if not isinstance(fixed, FixedSpectra):
+        assert fixed_mask is not None
+        fixed = FixedSpectra.of(fixed, fixed_mask, moving.shape)
+    if fixed.moving_shape != moving.shape:
+        raise ValueError(f"moving image {moving.shape} does not match the spectra's {fixed.moving_shape}")
+    shape = fixed.shape
+    out = (fixed.fixed_shape[0] + moving.shape[0] - 1, fixed.fixed_shape[1] + moving.shape[1] - 1)
+    mm = moving_mask[::-1, ::-1].astype(np.float64)
+    m = moving[::-1, ::-1] * mm
 
     def forward(a: FloatImage) -> NDArray[np.complex128]:
         return fft.rfft2(a, shape)
 
     def backward(a: NDArray[np.complex128]) -> FloatImage:
-        full = fft.irfft2(a, shape)
-        return full[: fixed.shape[0] + moving.shape[0] - 1, : fixed.shape[1] + moving.shape[1] - 1]
+        return fft.irfft2(a, shape)[: out[0], : out[1]]
 
-    F_f, F_m, F_fm, F_mm = forward(f), forward(m), forward(fm), forward(mm)
-    overlap = np.maximum(np.rint(backward(F_fm * F_mm)), 1.0)
-    sum_f, sum_m = backward(F_f * F_mm), backward(F_fm * F_m)
-    numerator = backward(F_f * F_m) - sum_f * sum_m / overlap
-    var_f = backward(forward(f * f) * F_mm) - sum_f**2 / overlap
-    var_m = backward(F_fm * forward(m * m)) - sum_m**2 / overlap
+    F_m, F_mm = forward(m), forward(mm)
+    overlap = np.maximum(np.rint(backward(fixed.F_fm * F_mm)), 1.0)
+    sum_f, sum_m = backward(fixed.F_f * F_mm), backward(fixed.F_fm * F_m)
+    numerator = backward(fixed.F_f * F_m) - sum_f * sum_m / overlap
+    var_f = backward(fixed.F_ff * F_mm) - sum_f**2 / overlap
+    var_m = backward(fixed.F_fm * forward(m * m)) - sum_m**2 / overlap
     denominator = np.sqrt(np.maximum(var_f * var_m, 0.0))
     valid = denominator > 1e-9 * max(float(denominator.max()), 1e-300)
     ncc = np.where(valid, numerator / np.where(valid, denominator, 1.0), 0.0)
@@ -149,7 +181,7 @@ def _parabolic_offset(values: NDArray[np.float64], index: int) -> float:
     return 0.0 if curvature >= 0 else float(0.5 * (left - right) / curvature)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class ReliefImage:
     """What one face contributes to planar alignment, computed once per face and cached.
 
@@ -162,6 +194,7 @@ class ReliefImage:
     mask: BoolImage
     pixel_mm: float
     polar: FloatImage
+    _spectra: dict[int, FixedSpectra] = field(default_factory=dict, repr=False)
 
     @classmethod
     def from_grid(
@@ -174,13 +207,26 @@ class ReliefImage:
         n_angles: int = 360,
     ) -> ReliefImage:
         """From a centred square height grid (NaN where there is no surface)."""
-        mask = np.isfinite(values)
-        margin_px = int(round(margin_mm / pixel_mm))
-        if margin_px > 0:
-            mask = ndimage.binary_erosion(mask, iterations=margin_px)
+        footprint = np.isfinite(values)
+        margin_px = max(int(round(margin_mm / pixel_mm)), 0)
+        # One distance transform gives the footprint less the margin and the window's core (less twice
+        # the margin) at once; as binary erosions they cost ten times more.
+        inside = ndimage.distance_transform_cdt(np.pad(footprint, 1), metric="taxicab")[1:-1, 1:-1]
+        mask = inside > margin_px
         detail = high_pass(np.nan_to_num(values), mask, high_pass_mm / pixel_mm)
-        window = soft_window(mask, erode_px=margin_px, soften_px=max(margin_px, 1))
+        window = ndimage.gaussian_filter((inside > 2 * margin_px).astype(np.float64), max(margin_px, 1))
         return cls(detail, mask, pixel_mm, polar_log_spectrum(detail * window, n_angles=n_angles))
+
+    def reduced(self, step: int) -> tuple[FloatImage, BoolImage]:
+        """Detail and mask at 1/step resolution (plain subsampling: the detail is already smooth)."""
+        return self.detail[::step, ::step], self.mask[::step, ::step]
+
+    def spectra(self, step: int) -> FixedSpectra:
+        """This image as the fixed side of masked NCC at 1/step resolution (cached)."""
+        if step not in self._spectra:
+            detail, mask = self.reduced(step)
+            self._spectra[step] = FixedSpectra.of(detail, mask, detail.shape)
+        return self._spectra[step]
 
 
 def align_reliefs(
@@ -188,34 +234,46 @@ def align_reliefs(
     target: ReliefImage,
     *,
     n_angle_peaks: int = 2,
-    correlation_step: int = 2,
+    coarse_step: int = 2,
     min_overlap: float = 0.3,
 ) -> PlanarAlignment:
     """Rotation + translation taking the source relief onto the target (see the module docstring).
 
-    ``correlation_step`` subsamples the images for the translation search (2: half resolution), which
-    costs little accuracy since an ICP refines the result anyway.
+    Every candidate angle is scored at 1/``coarse_step`` resolution; the best one is then correlated at
+    full resolution for its translation and final score.
     """
     if source.detail.shape != target.detail.shape or source.pixel_mm != target.pixel_mm:
         raise ValueError("relief images must share their grid (shape and pixel size)")
-    step = slice(None, None, correlation_step)
-    fixed, fixed_mask = target.detail[step, step], target.mask[step, step]
-    min_pixels = min_overlap * min(fixed_mask.sum(), source.mask[step, step].sum())
-    tried: list[tuple[float, float, tuple[float, float]]] = []
-    for angle in rotation_candidates(source.polar, target.polar, n_peaks=n_angle_peaks):
-        for candidate in (angle, angle + np.pi):
-            moving = rotate_image(source.detail, candidate)[step, step]
-            moving_mask = rotate_image(source.mask.astype(np.float64), candidate)[step, step] > 0.5
-            ncc, _ = masked_ncc(fixed, moving, fixed_mask, moving_mask, min_pixels)
-            shift = _peak_shift(ncc, moving.shape) * source.pixel_mm * correlation_step
-            tried.append((float(candidate), float(ncc.max()), (float(shift[0]), float(shift[1]))))
-    angle, score, shift = max(tried, key=lambda t: t[1])
+    angles = rotation_candidates(source.polar, target.polar, n_peaks=n_angle_peaks)
+    candidates = [a + half for a in angles for half in (0.0, np.pi)]
+    tried = [(a, *_correlate(source, target, a, coarse_step, min_overlap)) for a in candidates]
+    angle, coarse_score, coarse_shift = max(tried, key=lambda t: t[1])
+    score, shift = coarse_score, coarse_shift
+    if coarse_step > 1:
+        score, shift = _correlate(source, target, angle, 1, min_overlap)
     return PlanarAlignment(
         angle_rad=float(np.arctan2(np.sin(angle), np.cos(angle))),
         shift_mm=shift,
         score=score,
         candidates=tuple((a, s) for a, s, _ in tried),
     )
+
+
+def _correlate(
+    source: ReliefImage, target: ReliefImage, angle: float, step: int, min_overlap: float
+) -> tuple[float, tuple[float, float]]:
+    """Masked NCC of the source turned by ``angle`` against the target at 1/step resolution: the peak
+    score and the translation (mm)."""
+    fixed = target.spectra(step)
+    turned = ReliefImage(
+        rotate_image(source.detail, angle), rotate_image(source.mask.astype(np.float64), angle) > 0.5,
+        source.pixel_mm, source.polar,
+    )  # fmt: skip
+    moving, moving_mask = turned.reduced(step)
+    min_pixels = min_overlap * min(target.reduced(step)[1].sum(), source.reduced(step)[1].sum())
+    ncc, _ = masked_ncc(fixed, moving, None, moving_mask, min_pixels)
+    shift = _peak_shift(ncc, moving.shape) * source.pixel_mm * step
+    return float(ncc.max()), (float(shift[0]), float(shift[1]))
 
 
 def _peak_shift(ncc: FloatImage, moving_shape: tuple[int, ...]) -> NDArray[np.float64]:

@@ -65,6 +65,9 @@ class Acceptance(Configurable):
     min_fitness: float = param(
         0.3, low=0, high=1, doc="smallest share of overlapping source points for a valid result"
     )
+    max_points: int = param(
+        10_000, low=100, doc="source points scored at most (a regular subsample of larger clouds)"
+    )
     max_residual: float = param(
         0.02,
         unit="mm",

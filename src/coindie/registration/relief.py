@@ -18,7 +18,6 @@ The correlation score of step 4 is kept in the result's notes: it is a die-simil
 
 from __future__ import annotations
 
-import hashlib
 from collections import OrderedDict
 from dataclasses import dataclass, field
 
@@ -28,7 +27,7 @@ from scipy import ndimage
 from coindie.preprocess.canonical import CanonicalFrame, canonical_frame
 from coindie.preprocess.heightmap import height_map
 from coindie.registration.base import Estimate, Timer, register_method
-from coindie.registration.geometry import Cloud, FloatArray, IntArray, content_rng, transform_points
+from coindie.registration.geometry import Cloud, FloatArray, IntArray, transform_points
 from coindie.registration.icp import MIN_CORRESPONDENCES, IcpOutcome, point_to_plane_icp
 from coindie.registration.params import Configurable, param
 from coindie.registration.planar import ReliefImage, align_reliefs
@@ -45,7 +44,9 @@ class ReliefSearch(Configurable):
 
     NAME = "relief"
 
-    pixel: float = param(0.1, unit="mm", low=0.02, high=1.0, doc="pixel of the relief images")
+    pixel: float = param(
+        0.2, unit="mm", low=0.02, high=1.0, doc="pixel of the relief images (the ICP refines below it)"
+    )
     field_size: float = param(
         32.0, unit="mm", low=5.0, high=200.0, doc="side of the square relief image (larger faces are cropped)"
     )
@@ -56,11 +57,13 @@ class ReliefSearch(Configurable):
         0.6, unit="mm", low=0, doc="band inside the flan outline left out (edge wall, flan border)"
     )
     angle_peaks: int = param(2, low=1, high=8, doc="rotation candidates tried (each with its 180° twin)")
-    correlation_step: int = param(
-        2, low=1, high=4, doc="subsampling of the images for the translation search (1 = full resolution)"
+    coarse_step: int = param(
+        2, low=1, high=4, doc="subsampling of the images to choose among angles (1 = full resolution)"
     )
-    icp_points: int = param(3000, low=100, doc="relief points of the source used by the ICP")
-    seed: int = param(0, low=0, doc="seed of the ICP point sample")
+    frame_points: int = param(
+        6000, low=100, doc="points (a regular subsample) that fit the canonical frame's plane and quadric"
+    )
+    icp_points: int = param(2000, low=100, doc="relief points of the source used by the ICP")
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -84,18 +87,21 @@ class ReliefICP(Configurable):
         0.3, unit="mm", low=0, low_open=True, doc="reach of a first stage run only when too few points pair"
     )
     max_iterations: int = param(15, low=1, doc="iterations at most, per stage")
-    tolerance: float = param(1e-4, low=0, doc="a stage stops when the update (rad and mm) is smaller")
+    first_tolerance: float = param(
+        1e-3, low=0, doc="the rescue and first stages stop when the update (rad and mm) is smaller (paper)"
+    )
+    tolerance: float = param(1e-4, low=0, doc="the second stage stops when the update is smaller")
 
     def run(self, source: FloatArray, target: Cloud, T_init: FloatArray) -> IcpOutcome:
         """Refine ``T_init``; a rescue stage first when under half of the points pair within reach."""
         T = T_init
         distances, _ = target.nearest(transform_points(T, source), self.max_distance)
         if np.isfinite(distances).mean() < 0.5:
-            T = self._stage(source, target, T, self.rescue_distance).T_target_source
-        first = self._stage(source, target, T, self.max_distance)
+            T = self._stage(source, target, T, self.rescue_distance, self.first_tolerance).T_target_source
+        first = self._stage(source, target, T, self.max_distance, self.first_tolerance)
         if first.n_correspondences < MIN_CORRESPONDENCES:
             return first
-        second = self._stage(source, target, first.T_target_source, self.final_distance)
+        second = self._stage(source, target, first.T_target_source, self.final_distance, self.tolerance)
         if second.n_correspondences < MIN_CORRESPONDENCES:
             return first
         return IcpOutcome(
@@ -105,14 +111,11 @@ class ReliefICP(Configurable):
             second.converged,
         )
 
-    def _stage(self, source: FloatArray, target: Cloud, T: FloatArray, reach: float) -> IcpOutcome:
+    def _stage(
+        self, source: FloatArray, target: Cloud, T: FloatArray, reach: float, tolerance: float
+    ) -> IcpOutcome:
         return point_to_plane_icp(
-            source,
-            target,
-            T,
-            max_iterations=self.max_iterations,
-            max_distance=reach,
-            tolerance=self.tolerance,
+            source, target, T, max_iterations=self.max_iterations, max_distance=reach, tolerance=tolerance
         )
 
 
@@ -142,7 +145,7 @@ class ReliefRegistration:
                 prepared_source.image,
                 prepared_target.image,
                 n_angle_peaks=self.search.angle_peaks,
-                correlation_step=self.search.correlation_step,
+                coarse_step=self.search.coarse_step,
             )
         T_init = _lift(planar.matrix(), prepared_source.frame, prepared_target.frame)
         with timer("icp"):
@@ -159,7 +162,7 @@ class ReliefRegistration:
 
     def prepare(self, cloud: Cloud) -> PreparedFace:
         """Steps 1–3 for one face, from the cache when this exact cloud was seen."""
-        key = hashlib.blake2b(cloud.points.tobytes(), digest_size=16).digest()
+        key = cloud.key
         if key in self._cache:
             self._cache.move_to_end(key)
             return self._cache[key]
@@ -171,7 +174,8 @@ class ReliefRegistration:
 
     def _prepare(self, cloud: Cloud) -> PreparedFace:
         scan = Scan(points=cloud.points, normals=cloud.normals)
-        frame = canonical_frame(scan)
+        stride = -(-len(cloud.points) // self.search.frame_points)
+        frame = canonical_frame(scan.subset(np.arange(0, len(cloud.points), stride)))
         relief = height_map(scan, resolution=self.search.pixel, frame=frame, detrend="quadric")
         grid = _centred_grid(relief, self.search.pixel, self.search.field_size)
         image = ReliefImage.from_grid(
@@ -182,10 +186,9 @@ class ReliefRegistration:
         return PreparedFace(frame, image, relief_index)
 
     def _icp_sample(self, source: Cloud, relief_index: IntArray) -> IntArray:
-        if len(relief_index) <= self.search.icp_points:
-            return relief_index
-        rng = content_rng(source.points, self.search.seed)
-        return np.sort(rng.choice(relief_index, self.search.icp_points, replace=False))
+        """Every k-th relief point in canonical order (sorted by x): spread over the face, and the same
+        whatever the order of the input points."""
+        return relief_index[:: -(-len(relief_index) // self.search.icp_points)]
 
 
 def _centred_grid(relief, pixel: float, field_size: float) -> FloatArray:  # noqa: ANN001 (HeightMap)

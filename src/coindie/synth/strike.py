@@ -251,9 +251,11 @@ def _bend(rng: np.random.Generator, params: StrikeParams, radius: float) -> Bend
     if rng.random() >= params.bend_probability:
         return None
     sign = rng.choice([-1.0, 1.0])
+    # The fold line lies off the centre and the smaller side turns (an edge bent up or down), so the
+    # die-frame truth of the coin holds for most of its face.
     return Bend(
         float(rng.uniform(0, 360)),
-        float(rng.uniform(-0.5, 0.5) * radius),
+        float(rng.uniform(0.2, 0.6) * radius),
         float(sign * rng.uniform(*params.bend_angle_deg)),
         float(rng.uniform(1.0, 3.0)),
     )
