@@ -111,3 +111,17 @@ def test_methods_as_json_for_one_method() -> None:
     assert method["params"]["teaser.noise_bound"]["default"] == 0.5
     assert method["params"]["refine.source_radius"]["unit"] == "mm"
     assert runner.invoke(app, ["methods", "nope"]).exit_code == 2
+
+
+def test_register_defaults_to_our_relief_method_and_recovers_a_large_turn(tmp_path) -> None:
+    turn = rigid_transform((4, -3, 120), (0.5, -0.3, 0.1))
+    pair = make_coin_pair(seed=9, radius=6.0, T_target_source=turn)
+    source = write_ply(tmp_path / "L0010D.ply", pair.source)
+    target = write_ply(tmp_path / "L0011D.ply", pair.target)
+    result = runner.invoke(app, ["register", str(source), str(target), "--json"])
+    assert result.exit_code == 0, result.output
+    report = json.loads(result.output)
+    assert report["method"] == "relief"
+    T = np.array(report["T_target_source"])
+    assert rotation_error_deg(pair.T_target_source, T) < 0.5
+    assert translation_error_mm(pair.T_target_source, T) < 0.1

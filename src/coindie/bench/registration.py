@@ -367,17 +367,22 @@ def _write_per_die(rows: list[dict[str, object]], methods: list[str], path: Path
 
 def _plot(rows: list[dict[str, object]], methods: list[str], dies: list[str], path: Path) -> None:
     import matplotlib
+    import matplotlib.ticker
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    fig, ax = plt.subplots(figsize=(max(8.0, 0.35 * len(dies) * max(1, len(methods)) ** 0.5), 4.5))
+    fig, ax = plt.subplots(figsize=(min(18.0, max(8.0, 2.0 + 0.1 * len(dies) * len(methods))), 5.0))
     width = 0.8 / len(methods)
     for k, method in enumerate(methods):
         medians = per_die_medians(rows, method)
         values = [medians[d][1] if d in medians else np.nan for d in dies]
         ax.bar(np.arange(len(dies)) + k * width, values, width, label=method)
     ax.set_yscale("log")
+    ax.yaxis.set_major_locator(matplotlib.ticker.LogLocator(base=10, subs=(1.0, 2.0, 5.0)))
+    ax.yaxis.set_major_formatter(matplotlib.ticker.FuncFormatter(lambda value, _: f"{value:g}"))
+    ax.yaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+    ax.grid(axis="y", which="major", alpha=0.3)
     ax.set_xticks(np.arange(len(dies)) + 0.4 - width / 2, dies, rotation=90, fontsize=7)
     ax.set_ylabel("median SRE × 1000 (log)")
     ax.set_title("Registration error per die (lower is better)")
@@ -391,4 +396,13 @@ def _machine(workers: int) -> str:
     import platform
 
     cpu = platform.processor() or platform.machine()
-    return f"{cpu}, {os.cpu_count()} cores, {workers} worker(s), Python {platform.python_version()}"
+    try:
+        with open("/proc/cpuinfo") as handle:
+            names = [line.split(":", 1)[1].strip() for line in handle if line.startswith("model name")]
+        cpu = names[0] if names else cpu
+    except OSError:
+        pass
+    return (
+        f"{cpu} ({platform.machine()}), {os.cpu_count()} cores, {workers} worker process(es) of one BLAS "
+        f"thread, Python {platform.python_version()}"
+    )

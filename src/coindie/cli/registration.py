@@ -27,7 +27,7 @@ def register(
     target: Annotated[Path, typer.Argument(help="Target scan: the one the source is aligned onto.")],
     method: Annotated[
         str, typer.Option("--method", "-m", help="Method name (see `coindie methods`).")
-    ] = "fpfh+teaser+icp",
+    ] = "relief",
     param: Annotated[
         list[str] | None,
         typer.Option(

@@ -27,10 +27,11 @@ from scipy import ndimage
 from coindie.preprocess.canonical import CanonicalFrame, canonical_frame
 from coindie.preprocess.heightmap import height_map
 from coindie.registration.base import Estimate, Timer, register_method
-from coindie.registration.geometry import Cloud, FloatArray, IntArray, transform_points
+from coindie.registration.geometry import BoolArray, Cloud, FloatArray, IntArray, transform_points
 from coindie.registration.icp import MIN_CORRESPONDENCES, IcpOutcome, point_to_plane_icp
 from coindie.registration.params import Configurable, param
 from coindie.registration.planar import ReliefImage, align_reliefs
+from coindie.registration.projective import ProjectedCloud
 from coindie.scan import Scan
 
 #: Points of the relief whose normal is within this angle of the face's up direction (the edge wall and
@@ -86,22 +87,37 @@ class ReliefICP(Configurable):
     rescue_distance: float = param(
         0.3, unit="mm", low=0, low_open=True, doc="reach of a first stage run only when too few points pair"
     )
+    correspondences: str = param(
+        "mixed",
+        choices=("mixed", "projective", "kdtree"),
+        doc="how source points find target points: the point under them in the target's plane "
+        "(projective), the nearest in 3-D (kdtree), or projective then kdtree for the last stage (mixed)",
+    )
+    pixel: float = param(
+        0.05, unit="mm", low=0.01, high=1.0, doc="pixel of the target's image for projective correspondences"
+    )
     max_iterations: int = param(15, low=1, doc="iterations at most, per stage")
     first_tolerance: float = param(
         1e-3, low=0, doc="the rescue and first stages stop when the update (rad and mm) is smaller (paper)"
     )
     tolerance: float = param(1e-4, low=0, doc="the second stage stops when the update is smaller")
 
-    def run(self, source: FloatArray, target: Cloud, T_init: FloatArray) -> IcpOutcome:
-        """Refine ``T_init``; a rescue stage first when under half of the points pair within reach."""
-        T = T_init
-        distances, _ = target.nearest(transform_points(T, source), self.max_distance)
+    def run(
+        self, source: FloatArray, target: Cloud, T_init: FloatArray, early: Cloud | None = None
+    ) -> IcpOutcome:
+        """Refine ``T_init``; a rescue stage first when under half of the points pair within reach.
+
+        ``early``, when given, is searched instead of ``target`` by the rescue and first stages (a
+        projective index of the target: cheaper, a little less exact than the last stage's search)."""
+        T, early = T_init, target if early is None else early
+        distances, _ = early.nearest(transform_points(T, source), self.max_distance)
         if np.isfinite(distances).mean() < 0.5:
-            T = self._stage(source, target, T, self.rescue_distance, self.first_tolerance).T_target_source
-        first = self._stage(source, target, T, self.max_distance, self.first_tolerance)
+            T = self._stage(source, early, T, self.rescue_distance, self.first_tolerance).T_target_source
+        first = self._stage(source, early, T, self.max_distance, self.first_tolerance)
         if first.n_correspondences < MIN_CORRESPONDENCES:
             return first
-        second = self._stage(source, target, first.T_target_source, self.final_distance, self.tolerance)
+        last = early if self.correspondences == "projective" else target
+        second = self._stage(source, last, first.T_target_source, self.final_distance, self.tolerance)
         if second.n_correspondences < MIN_CORRESPONDENCES:
             return first
         return IcpOutcome(
@@ -119,13 +135,25 @@ class ReliefICP(Configurable):
         )
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(eq=False)
 class PreparedFace:
-    """The per-face work of the method (see the module docstring, steps 1–3)."""
+    """The per-face work of the method (see the module docstring, steps 1–3); the projective index is
+    made the first time the face is a target."""
 
     frame: CanonicalFrame
     image: ReliefImage
-    relief_index: IntArray  # indices of relief points (not the wall) in the face's cloud
+    relief: BoolArray  # the relief points (not the wall) of the face's cloud
+    projected: ProjectedCloud | None = None
+
+    def as_target(self, cloud: Cloud, icp: ReliefICP) -> Cloud:
+        """The cloud the ICP's first stages search: the face's projective index, or the cloud itself."""
+        if icp.correspondences == "kdtree":
+            return cloud
+        if self.projected is None:
+            self.projected = ProjectedCloud.over_plane(
+                cloud, self.frame.T_canonical_scan, self.relief, icp.pixel
+            )
+        return self.projected
 
 
 @dataclass
@@ -149,8 +177,9 @@ class ReliefRegistration:
             )
         T_init = _lift(planar.matrix(), prepared_source.frame, prepared_target.frame)
         with timer("icp"):
-            sample = self._icp_sample(source, prepared_source.relief_index)
-            outcome = self.icp.run(source.points[sample], target, T_init)
+            sample = self._icp_sample(source, np.flatnonzero(prepared_source.relief))
+            early = prepared_target.as_target(target, self.icp)
+            outcome = self.icp.run(source.points[sample], target, T_init, early)
         notes = (
             f"relief correlation {planar.score:.3f} at {np.degrees(planar.angle_rad):.2f}°",
             f"ICP: {outcome.iterations} iterations, converged={outcome.converged}",
@@ -181,9 +210,8 @@ class ReliefRegistration:
         image = ReliefImage.from_grid(
             grid, self.search.pixel, high_pass_mm=self.search.high_pass, margin_mm=self.search.margin
         )
-        up = frame.up
-        relief_index = np.flatnonzero(cloud.normals @ up >= np.cos(np.radians(_RELIEF_MAX_NORMAL_ANGLE_DEG)))
-        return PreparedFace(frame, image, relief_index)
+        relief_points = cloud.normals @ frame.up >= np.cos(np.radians(_RELIEF_MAX_NORMAL_ANGLE_DEG))
+        return PreparedFace(frame, image, relief_points)
 
     def _icp_sample(self, source: Cloud, relief_index: IntArray) -> IntArray:
         """Every k-th relief point in canonical order (sorted by x): spread over the face, and the same
