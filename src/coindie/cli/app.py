@@ -90,3 +90,4 @@ from coindie.cli import demo as _demo  # noqa: E402,F401
 from coindie.cli import registration as _registration  # noqa: E402,F401
 from coindie.cli import scans as _scans  # noqa: E402,F401
 from coindie.cli import synth as _synth  # noqa: E402,F401
+from coindie.cli import train as _train  # noqa: E402,F401

@@ -1,0 +1,236 @@
+"""Fully Convolutional Geometric Features (Choy et al. 2019): a sparse U-Net giving each voxel a unit
+32-d descriptor, as the Riedones3D paper uses it (voxel 0.1 mm, input feature "ones").
+
+The network (:class:`~coindie.learned.network.FCGFNet`) is smaller than the original (8.8 M parameters,
+kernel 7 first layer) so that it trains on a CPU: encoder channels 16-32-64-128 over four levels (0.1, 0.2,
+0.4, 0.8 mm voxels), each level a 3x3x3 convolution or a stride-2 2x2x2 convolution then a residual block
+of two 3x3x3 convolutions; a decoder of transposed convolutions whose outputs are joined to the encoder's
+(skip connections) and fused by a 3x3x3 convolution; a per-voxel head of two linear layers; unit-normalised
+outputs. About 1.7 M parameters (6.6 MB in float32). Its receptive field spans ~5 mm, a few letters or a
+curl of hair.
+
+:class:`FCGFDescriptor` is the registration's :class:`~coindie.registration.features.FeatureExtractor`:
+descriptors of the cloud grid-sampled at the model's voxel, from the shipped weights
+(``weights/fcgf.safetensors`` and its ``fcgf.json``) or from a model file given as ``weights``.
+Model files are a safetensors state dict with a JSON config beside it: no pickled objects.
+"""
+
+from __future__ import annotations
+
+import json
+from collections import OrderedDict
+from collections.abc import Iterator
+from contextlib import contextmanager
+from dataclasses import asdict, dataclass
+from functools import lru_cache
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from coindie.errors import CoinDieError, ParameterError
+from coindie.registration.geometry import Cloud, FloatArray, IntArray, content_key
+from coindie.registration.params import Configurable, param
+from coindie.scan import Scan
+
+if TYPE_CHECKING:
+    import torch
+
+#: The shipped model: a safetensors state dict and its JSON config.
+SHIPPED_WEIGHTS = Path(__file__).parent / "weights" / "fcgf.safetensors"
+FORMAT = "coindie-fcgf"
+#: Support clouds whose descriptors are kept (an all-pairs study meets every face many times).
+_DESCRIPTOR_CACHE_SIZE = 8
+
+
+class ModelFileError(CoinDieError, ValueError):
+    """A model file is missing or is not a coindie FCGF model."""
+
+    def __init__(self, problem: str, path: str | Path) -> None:
+        self.path, self.problem = Path(path), problem
+        super().__init__(f"{self.path}: {problem}")
+
+
+@dataclass(frozen=True)
+class FCGFConfig:
+    """The architecture (saved with the weights: a model is rebuilt from it)."""
+
+    voxel: float = 0.1  # mm, the finest grid
+    channels: tuple[int, ...] = (16, 32, 64, 128)  # encoder channels per level (stride 1, 2, 4, ...)
+    out_dim: int = 32
+    in_channels: int = 1  # the input feature is "ones"
+
+    def to_json(self) -> dict[str, Any]:
+        return asdict(self) | {"channels": list(self.channels)}
+
+    @classmethod
+    def from_json(cls, data: dict[str, Any]) -> FCGFConfig:
+        return cls(
+            voxel=float(data["voxel"]),
+            channels=tuple(int(c) for c in data["channels"]),
+            out_dim=int(data["out_dim"]),
+            in_channels=int(data.get("in_channels", 1)),
+        )
+
+
+def _build_network(config: FCGFConfig) -> torch.nn.Module:
+    from coindie.learned.network import FCGFNet  # torch is imported here, not with this module
+
+    return FCGFNet(config)
+
+
+def new_model(config: FCGFConfig | None = None, seed: int = 0) -> torch.nn.Module:
+    """A freshly initialised network (weights drawn from ``seed``)."""
+    import torch
+
+    with torch.random.fork_rng(devices=[]):
+        torch.manual_seed(seed)
+        return _build_network(config or FCGFConfig())
+
+
+def count_parameters(model: torch.nn.Module) -> int:
+    return sum(p.numel() for p in model.parameters())
+
+
+def config_path(weights: str | Path) -> Path:
+    """The JSON config beside a model's safetensors file."""
+    return Path(weights).with_suffix(".json")
+
+
+def save_model(model: torch.nn.Module, path: str | Path, info: dict[str, Any] | None = None) -> Path:
+    """Write ``path`` (safetensors state dict) and its JSON config beside it; returns ``path``."""
+    from safetensors.torch import save_file
+
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    state = {k: v.detach().cpu().contiguous() for k, v in model.state_dict().items()}
+    save_file(state, str(path.with_suffix(".tmp")))
+    path.with_suffix(".tmp").replace(path)
+    header = {"format": FORMAT, "version": 1, "config": model.config.to_json(), "info": info or {}}
+    config_path(path).write_text(json.dumps(header, indent=1) + "\n")
+    return path
+
+
+def read_header(path: str | Path) -> dict[str, Any]:
+    """The JSON config of a model file, checked."""
+    header_path = config_path(path)
+    if not header_path.is_file():
+        raise ModelFileError("missing: a model's JSON config must sit beside its .safetensors", header_path)
+    try:
+        header = json.loads(header_path.read_text())
+        FCGFConfig.from_json(header["config"])
+    except (json.JSONDecodeError, KeyError, TypeError, ValueError) as error:
+        raise ModelFileError(
+            f"not an FCGF model config ({type(error).__name__}: {error})", header_path
+        ) from None
+    if header.get("format") != FORMAT:
+        raise ModelFileError(f"format is {header.get('format')!r}, expected {FORMAT!r}", header_path)
+    return header
+
+
+def load_model(path: str | Path, device: str = "cpu") -> torch.nn.Module:
+    """The network saved by :func:`save_model`, in evaluation mode on ``device``."""
+    from safetensors import SafetensorError
+    from safetensors.torch import load_file
+
+    path = Path(path)
+    if not path.is_file():
+        raise ModelFileError("no such model file", path)
+    model = _build_network(FCGFConfig.from_json(read_header(path)["config"]))
+    try:
+        state = load_file(str(path))
+    except (SafetensorError, OSError) as error:
+        raise ModelFileError(f"not a safetensors file ({error})", path) from None
+    try:
+        model.load_state_dict(state)
+    except RuntimeError as error:
+        first = str(error).splitlines()[0]
+        raise ModelFileError(f"weights do not fit the config beside them ({first})", path) from None
+    return model.to(device).eval()
+
+
+def _cuda_available() -> bool:
+    import torch
+
+    return torch.cuda.is_available()
+
+
+@lru_cache(maxsize=4)
+def _cached_model(path: str, device: str) -> torch.nn.Module:
+    return load_model(path, device)
+
+
+_descriptor_cache: OrderedDict[tuple[str, str, bytes], FloatArray] = OrderedDict()
+
+
+@dataclass(frozen=True, kw_only=True)
+class FCGFDescriptor(Configurable):
+    """FCGF descriptors (32-d, unit norm) on the cloud grid-sampled at the model's voxel (0.1 mm)."""
+
+    NAME = "fcgf"
+
+    weights: str = param(
+        "", kind=str, doc="model file (.safetensors, its .json beside it); empty: the shipped weights"
+    )
+    device: str = param("cpu", kind=str, choices=("cpu", "cuda"), doc="where the network runs")
+    threads: int = param(
+        1,
+        low=0,
+        doc="PyTorch CPU threads (0: its default; 1 is fastest when pairs run in parallel processes)",
+    )
+
+    @property
+    def weights_path(self) -> Path:
+        return Path(self.weights) if self.weights else SHIPPED_WEIGHTS
+
+    def model(self) -> torch.nn.Module:
+        path = self.weights_path
+        if not self.weights and not path.is_file():
+            raise ModelFileError(
+                "no shipped FCGF weights; train them with `coindie train fcgf HOARD --out DIR` and copy "
+                "DIR/fcgf.safetensors and DIR/fcgf.json here, or pass fcgf.weights=PATH",
+                path,
+            )
+        if self.device == "cuda" and not _cuda_available():
+            raise ParameterError("fcgf.device is 'cuda' but this PyTorch build sees no CUDA device")
+        return _cached_model(str(path.resolve()), self.device)
+
+    def support(self, cloud: Cloud) -> Cloud:
+        from coindie.preprocess.sampling import grid_sample
+
+        sampled = grid_sample(Scan(points=cloud.points, normals=cloud.normals), self.model().config.voxel)
+        assert sampled.normals is not None
+        return Cloud(sampled.points, sampled.normals)
+
+    def describe(self, support: Cloud, at: IntArray) -> FloatArray:
+        key = (str(self.weights_path), self.device, content_key(support.points))
+        if key not in _descriptor_cache:
+            with torch_threads(self.threads):
+                _descriptor_cache[key] = describe_cloud(self.model(), support.points, self.device)
+            if len(_descriptor_cache) > _DESCRIPTOR_CACHE_SIZE:
+                _descriptor_cache.popitem(last=False)
+        _descriptor_cache.move_to_end(key)
+        return _descriptor_cache[key][at]
+
+
+@contextmanager
+def torch_threads(n: int) -> Iterator[None]:
+    """PyTorch's CPU threads set to ``n`` (0: unchanged) for the duration."""
+    import torch
+
+    before = torch.get_num_threads()
+    if n:
+        torch.set_num_threads(n)
+    try:
+        yield
+    finally:
+        torch.set_num_threads(before)
+
+
+def describe_cloud(model: torch.nn.Module, points: FloatArray, device: str = "cpu") -> FloatArray:
+    """(N, out_dim) float64 descriptors of an (N, 3) cloud in mm, by a model in evaluation mode."""
+    import torch
+
+    with torch.inference_mode():
+        tensor = torch.as_tensor(np.ascontiguousarray(points), dtype=torch.float64, device=device)
+        return model.describe_points(tensor).double().cpu().numpy()

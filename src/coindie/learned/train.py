@@ -1,0 +1,395 @@
+"""Training FCGF on a hoard's registration training split, as the paper did (section 4.1).
+
+``train_fcgf(hoard, out, TrainOptions(epochs=380))`` runs SGD (lr 0.1, momentum 0.8, weight decay 1e-4,
+lr x 0.99 after each epoch) on the contrastive loss with hardest negatives, one augmented pair of faces of
+one die at a time. After each epoch it measures, on held-out pairs (whole dies, turned like the benchmark
+turns them, never scaled), the loss and the feature-match recall, and writes into ``out``:
+
+- ``checkpoint.safetensors`` + ``checkpoint.json``: weights, optimizer state and epoch (``resume=True``
+  continues from there, to the same result as an uninterrupted run);
+- ``fcgf.safetensors`` + ``fcgf.json``: the model of the best epoch (highest FMR, then lowest validation
+  loss; the last epoch without validation pairs), ready for ``fcgf.weights=...``;
+- ``log.json`` (one record per epoch) and ``curves.png`` (losses, FMR and inlier ratio per epoch).
+
+Feature-match recall (Deng et al. 2018, as FCGF reports it): descriptors of up to ``fmr_points`` random
+points per cloud, matched by mutual nearest neighbours; a match is an inlier when the true transform puts
+its source point within ``fmr_radius`` (0.3 mm) of its target point; FMR is the share of pairs whose
+inlier ratio exceeds ``fmr_ratio`` (5 %).
+"""
+
+from __future__ import annotations
+
+import json
+import time
+from collections.abc import Callable
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import torch
+
+from coindie.errors import ParameterError
+from coindie.learned.fcgf import (
+    FCGFConfig,
+    config_path,
+    count_parameters,
+    new_model,
+    save_model,
+    torch_threads,
+)
+from coindie.learned.losses import ContrastiveLoss
+from coindie.learned.pairs import TRAINING, VALIDATION, PairSet, TrainingPair, split_pairs
+from coindie.registration.features import MutualNN
+from coindie.registration.geometry import transform_points
+
+CHECKPOINT = "checkpoint.safetensors"
+MODEL = "fcgf.safetensors"
+LOG = "log.json"
+CURVES = "curves.png"
+#: Seeds of validation pairs are offset so that they never equal a training draw.
+_VALIDATION_SEED = 1_000_003
+
+Progress = Callable[[int, int], None]
+EpochReport = Callable[[dict[str, Any]], None]
+
+
+@dataclass(frozen=True)
+class TrainOptions:
+    """Training settings (defaults: the paper's)."""
+
+    epochs: int = 380
+    lr: float = 0.1
+    momentum: float = 0.8
+    weight_decay: float = 1e-4
+    lr_decay: float = 0.99  # lr factor after each epoch
+    batch_pairs: int = 1  # pairs per SGD step
+    max_pairs: int = 0  # training pairs per epoch, drawn anew each epoch (0: all)
+    val_fraction: float = 0.1  # share of the pairs held out (whole dies)
+    max_val_pairs: int = 32
+    split: str = "registration_train"
+    seed: int = 0
+    device: str = "cpu"
+    threads: int = 1  # torch CPU threads (0: torch's default; more than the idle cores is many times slower)
+    fmr_radius: float = 0.3  # mm
+    fmr_ratio: float = 0.05
+    fmr_points: int = 5000
+    model: FCGFConfig = field(default_factory=FCGFConfig)
+    loss: ContrastiveLoss = field(default_factory=ContrastiveLoss)
+
+    def __post_init__(self) -> None:
+        positive = ("epochs", "lr", "batch_pairs", "max_val_pairs", "fmr_radius", "fmr_points")
+        for name in positive:
+            if not getattr(self, name) > 0:
+                raise ParameterError(
+                    f"The {name!r} training option must be > 0. Got {getattr(self, name)!r}."
+                )
+        if self.threads < 0 or self.max_pairs < 0:
+            raise ParameterError(f"threads and max_pairs must be >= 0. Got {self.threads}, {self.max_pairs}.")
+        if not (0 <= self.momentum < 1 and 0 < self.lr_decay <= 1 and 0 <= self.val_fraction < 1):
+            raise ParameterError(
+                "Training options need 0 <= momentum < 1, 0 < lr_decay <= 1, 0 <= val_fraction < 1."
+            )
+        if self.device == "cuda" and not torch.cuda.is_available():
+            raise ParameterError("--device cuda: this PyTorch build sees no CUDA device.")
+        if self.device not in ("cpu", "cuda"):
+            raise ParameterError(f"The device must be 'cpu' or 'cuda'. Got {self.device!r}.")
+
+    def to_json(self) -> dict[str, Any]:
+        return asdict(self) | {"model": self.model.to_json()}
+
+
+def train_fcgf(
+    data: str | Path,
+    out: str | Path,
+    options: TrainOptions | None = None,
+    *,
+    resume: bool = False,
+    progress: Progress | None = None,
+    report: EpochReport | None = None,
+) -> list[dict[str, Any]]:
+    """Train (or, with ``resume``, continue training) and return the log, one record per epoch."""
+    options = options or TrainOptions()
+    out = Path(out)
+    with torch_threads(options.threads):
+        return _train(data, out, options, resume, progress, report)
+
+
+def _train(
+    data: str | Path,
+    out: Path,
+    options: TrainOptions,
+    resume: bool,
+    progress: Progress | None,
+    report: EpochReport | None,
+) -> list[dict[str, Any]]:
+    pairs = PairSet(data, options.split, voxel=options.model.voxel)
+    train_pairs, val_pairs = split_pairs(pairs.pairs, pairs.truth, options.val_fraction, options.seed)
+    train_set, val_set = pairs.subset(train_pairs), pairs.subset(_at_most(val_pairs, options))
+    model = new_model(options.model, options.seed).to(options.device)
+    optimizer = torch.optim.SGD(
+        model.parameters(), lr=options.lr, momentum=options.momentum, weight_decay=options.weight_decay
+    )
+    log = _start(out, model, optimizer, options, resume)
+    steps = _per_epoch(options, train_set) + len(val_set)
+    if progress:
+        progress(0, max(1, steps * (options.epochs - len(log))))
+    for epoch in range(len(log) + 1, options.epochs + 1):
+        record = {"epoch": epoch, "lr": options.lr * options.lr_decay ** (epoch - 1)}
+        record["train"] = _train_epoch(model, optimizer, train_set, options, epoch, record["lr"], progress)
+        record["val"] = _validate(model, val_set, options, progress)
+        log.append(record)
+        _save(out, model, optimizer, options, log, data)
+        if report:
+            report(record)
+    return log
+
+
+def _at_most(val_pairs: list, options: TrainOptions) -> list:
+    """At most ``max_val_pairs`` validation pairs, drawn evenly from the held-out ones."""
+    if len(val_pairs) <= options.max_val_pairs:
+        return val_pairs
+    keep = np.random.default_rng([options.seed, 11]).choice(
+        len(val_pairs), options.max_val_pairs, replace=False
+    )
+    return [val_pairs[i] for i in sorted(keep)]
+
+
+# ------------------------------------------------------------------------------------------ one epoch
+
+
+def _per_epoch(options: TrainOptions, train_set: PairSet) -> int:
+    return min(len(train_set), options.max_pairs) if options.max_pairs else len(train_set)
+
+
+def _train_epoch(
+    model: torch.nn.Module,
+    optimizer: torch.optim.Optimizer,
+    train_set: PairSet,
+    options: TrainOptions,
+    epoch: int,
+    lr: float,
+    progress: Progress | None,
+) -> dict[str, float]:
+    """One pass over (up to ``max_pairs`` of) the training pairs; mean loss terms."""
+    for group in optimizer.param_groups:
+        group["lr"] = lr
+    model.train()
+    order = np.random.default_rng([options.seed, epoch]).permutation(len(train_set))
+    order = order[: _per_epoch(options, train_set)]
+    terms: list[dict[str, float]] = []
+    start = time.perf_counter()
+    for step, first in enumerate(range(0, len(order), options.batch_pairs)):
+        batch = [
+            train_set.make(int(i), [options.seed, epoch, int(i)], TRAINING)
+            for i in order[first:][: options.batch_pairs]
+        ]
+        generator = torch.Generator().manual_seed(options.seed * 1_000_003 + epoch * 10_007 + step)
+        optimizer.zero_grad(set_to_none=True)
+        losses = _batch_losses(model, batch, options, generator)
+        losses["loss"].backward()
+        optimizer.step()
+        terms.append({k: float(v.detach()) for k, v in losses.items()})
+        if progress:
+            progress(len(batch), 0)
+    return _means(terms) | {"seconds": time.perf_counter() - start, "pairs": len(order)}
+
+
+def _batch_losses(
+    model: torch.nn.Module, batch: list[TrainingPair], options: TrainOptions, generator: torch.Generator
+) -> dict[str, torch.Tensor]:
+    """Mean loss terms of a batch of pairs, all clouds through the network in one pass."""
+    clouds = [c for pair in batch for c in (pair.source, pair.target)]
+    points = torch.as_tensor(np.concatenate(clouds), dtype=torch.float64, device=options.device)
+    index = torch.repeat_interleave(torch.arange(len(clouds)), torch.tensor([len(c) for c in clouds]))
+    features = model.describe_points(points, index.to(options.device)).split([len(c) for c in clouds])
+    per_pair = []
+    for k, pair in enumerate(batch):
+        matches = torch.as_tensor(pair.matches, device=options.device)
+        x_source, x_target = (torch.as_tensor(c, device=options.device) for c in (pair.source, pair.target))
+        per_pair.append(
+            options.loss(features[2 * k], features[2 * k + 1], matches, x_source, x_target, generator)
+        )
+    return {key: torch.stack([terms[key] for terms in per_pair]).mean() for key in per_pair[0]}
+
+
+def _means(terms: list[dict[str, float]]) -> dict[str, float]:
+    return {key: float(np.mean([t[key] for t in terms])) for key in terms[0]} if terms else {}
+
+
+# ------------------------------------------------------------------------------------------ validation
+
+
+def _validate(
+    model: torch.nn.Module, val_set: PairSet, options: TrainOptions, progress: Progress | None
+) -> dict[str, Any]:
+    """Loss, inlier ratios and FMR on the held-out pairs (fixed augmentation, evaluation mode)."""
+    if not len(val_set):
+        return {}
+    model.eval()
+    losses, ratios, seconds = [], [], []
+    with torch.no_grad():
+        for index in range(len(val_set)):
+            pair = val_set.make(index, [options.seed, _VALIDATION_SEED, index], VALIDATION)
+            f_source, f_target, spent = _describe_pair(model, pair, options.device)
+            generator = torch.Generator().manual_seed(options.seed + index)
+            x = [torch.as_tensor(c, device=options.device) for c in (pair.source, pair.target)]
+            matches = torch.as_tensor(pair.matches, device=options.device)
+            losses.append(float(options.loss(f_source, f_target, matches, *x, generator)["loss"]))
+            ratios.append(
+                inlier_ratio(pair, f_source.cpu().double().numpy(), f_target.cpu().double().numpy(), options)
+            )
+            seconds.append(spent)
+            if progress:
+                progress(1, 0)
+    return {
+        "loss": float(np.mean(losses)),
+        "fmr": float(np.mean(np.asarray(ratios) > options.fmr_ratio)),
+        "inlier_ratio": float(np.mean(ratios)),
+        "inlier_ratios": ratios,
+        "seconds_per_cloud": float(np.mean(seconds)),
+        "pairs": len(val_set),
+    }
+
+
+def _describe_pair(
+    model: torch.nn.Module, pair: TrainingPair, device: str
+) -> tuple[torch.Tensor, torch.Tensor, float]:
+    """Descriptors of both clouds, one pass each; mean seconds per cloud."""
+    start = time.perf_counter()
+    f = [model.describe_points(torch.as_tensor(c, device=device)) for c in (pair.source, pair.target)]
+    if device == "cuda":
+        torch.cuda.synchronize()
+    return f[0], f[1], (time.perf_counter() - start) / 2
+
+
+def inlier_ratio(
+    pair: TrainingPair, f_source: np.ndarray, f_target: np.ndarray, options: TrainOptions
+) -> float:
+    """Share of the mutual-nearest-neighbour matches of random points that the truth confirms."""
+    rng = np.random.default_rng([options.seed, len(pair.source), len(pair.target)])
+    s = _draw(rng, len(pair.source), options.fmr_points)
+    t = _draw(rng, len(pair.target), options.fmr_points)
+    matches = MutualNN().match(f_source[s], f_target[t])
+    if not len(matches):
+        return 0.0
+    moved = transform_points(pair.T_target_source, pair.source[s[matches[:, 0]]])
+    return float(np.mean(np.linalg.norm(moved - pair.target[t[matches[:, 1]]], axis=1) < options.fmr_radius))
+
+
+def _draw(rng: np.random.Generator, n: int, k: int) -> np.ndarray:
+    return np.sort(rng.choice(n, k, replace=False)) if n > k else np.arange(n)
+
+
+# ------------------------------------------------------------------------------------------ files
+
+
+def _start(
+    out: Path, model: torch.nn.Module, optimizer: torch.optim.Optimizer, options: TrainOptions, resume: bool
+) -> list[dict[str, Any]]:
+    """The log so far: empty for a new run, the checkpoint's epochs (model and optimizer restored) when
+    resuming. Refuses to overwrite a checkpoint without ``resume``."""
+    checkpoint = out / CHECKPOINT
+    if not checkpoint.is_file():
+        out.mkdir(parents=True, exist_ok=True)
+        return []
+    if not resume:
+        raise ParameterError(
+            f"{checkpoint}: a training run is already there; resume it or choose another folder"
+        )
+    header = json.loads(config_path(checkpoint).read_text())
+    if header["options"]["model"] != options.model.to_json():
+        raise ParameterError(
+            f"{checkpoint}: trained with model {header['options']['model']}, not {options.model.to_json()}"
+        )
+    _load_checkpoint(checkpoint, header, model, optimizer, options.device)
+    log = json.loads((out / LOG).read_text())
+    return log[: header["epoch"]]
+
+
+def _save(
+    out: Path,
+    model: torch.nn.Module,
+    optimizer: torch.optim.Optimizer,
+    options: TrainOptions,
+    log: list[dict[str, Any]],
+    data: str | Path,
+) -> None:
+    """Log, curves, best model, then the checkpoint (last: a run stopped in between redoes the epoch)."""
+    (out / LOG).write_text(json.dumps(log, indent=1) + "\n")
+    plot_curves(log, out / CURVES)
+    if _best_epoch(log) == log[-1]["epoch"]:
+        info = {"epoch": log[-1]["epoch"], "val": _without_lists(log[-1]["val"]), "data": str(data)}
+        save_model(
+            model, out / MODEL, info | {"options": options.to_json(), "parameters": count_parameters(model)}
+        )
+    _save_checkpoint(out / CHECKPOINT, model, optimizer, options, log[-1]["epoch"])
+
+
+def _best_epoch(log: list[dict[str, Any]]) -> int:
+    scored = [r for r in log if r["val"]]
+    if not scored:
+        return log[-1]["epoch"]
+    return max(scored, key=lambda r: (r["val"]["fmr"], -r["val"]["loss"], r["epoch"]))["epoch"]
+
+
+def _without_lists(record: dict[str, Any]) -> dict[str, Any]:
+    return {k: v for k, v in record.items() if not isinstance(v, list)}
+
+
+def _save_checkpoint(
+    path: Path, model: torch.nn.Module, optimizer: torch.optim.Optimizer, options: TrainOptions, epoch: int
+) -> None:
+    """Weights and optimizer state as safetensors (no pickle), the rest as JSON beside it."""
+    from safetensors.torch import save_file
+
+    state = optimizer.state_dict()
+    tensors = {f"model.{k}": v.detach().cpu().contiguous() for k, v in model.state_dict().items()}
+    for index, slots in state["state"].items():
+        tensors |= {
+            f"optimizer.{index}.{name}": v.detach().cpu().contiguous()
+            for name, v in slots.items()
+            if torch.is_tensor(v)
+        }
+    save_file(tensors, str(path.with_suffix(".tmp")))
+    path.with_suffix(".tmp").replace(path)
+    header = {"epoch": epoch, "options": options.to_json(), "param_groups": state["param_groups"]}
+    config_path(path).write_text(json.dumps(header, indent=1) + "\n")
+
+
+def _load_checkpoint(
+    path: Path, header: dict[str, Any], model: torch.nn.Module, optimizer: torch.optim.Optimizer, device: str
+) -> None:
+    from safetensors.torch import load_file
+
+    tensors = load_file(str(path), device=device)
+    model.load_state_dict({k[len("model.") :]: v for k, v in tensors.items() if k.startswith("model.")})
+    slots: dict[int, dict[str, torch.Tensor]] = {}
+    for key, value in tensors.items():
+        if key.startswith("optimizer."):
+            _, index, name = key.split(".", 2)
+            slots.setdefault(int(index), {})[name] = value
+    optimizer.load_state_dict({"state": slots, "param_groups": header["param_groups"]})
+
+
+def plot_curves(log: list[dict[str, Any]], path: Path) -> None:
+    """Losses (training, validation) and FMR / mean inlier ratio per epoch."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    epochs = [r["epoch"] for r in log]
+    figure, (left, right) = plt.subplots(1, 2, figsize=(10, 4))
+    left.plot(epochs, [r["train"].get("loss", np.nan) for r in log], "o-", label="training")
+    left.plot(epochs, [r["val"].get("loss", np.nan) for r in log], "s-", label="validation")
+    left.set(xlabel="epoch", ylabel="contrastive loss", title="Loss")
+    right.plot(epochs, [r["val"].get("fmr", np.nan) for r in log], "o-", label="FMR (inlier ratio > 5 %)")
+    right.plot(epochs, [r["val"].get("inlier_ratio", np.nan) for r in log], "s-", label="mean inlier ratio")
+    right.set(xlabel="epoch", ylim=(0, 1), title="Feature-match recall (0.3 mm)")
+    for axis in (left, right):
+        axis.grid(alpha=0.3)
+        axis.legend()
+    figure.tight_layout()
+    figure.savefig(path, dpi=100)
+    plt.close(figure)

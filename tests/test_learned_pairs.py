@@ -1,0 +1,139 @@
+"""Training pairs of a tiny synthetic hoard: true matches, seeded augmentation, held-out dies."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+from scipy.spatial.transform import Rotation
+
+from coindie.bench.truth import FaceTruth, HoardTruth, TruthError, load_truth
+from coindie.learned.pairs import (
+    TRAINING,
+    VALIDATION,
+    Augmentation,
+    PairSet,
+    face_pairs,
+    match_points,
+    split_pairs,
+)
+from coindie.registration.geometry import transform_points
+
+VOXEL = 0.2
+
+
+@pytest.fixture(scope="module")
+def hoard(tmp_path_factory) -> Path:
+    from coindie.synth.design import DieParams
+    from coindie.synth.hoard import PhysicsParams, synthesize
+    from coindie.synth.scanner import ScanParams
+    from coindie.synth.strike import StrikeParams
+
+    out = tmp_path_factory.mktemp("pairs_hoard")
+    physics = PhysicsParams(
+        die=DieParams(pitch_mm=0.05),
+        strike=StrikeParams(bend_probability=0.0, double_probability=0.0),
+        scan=ScanParams(spacing_mm=0.1),
+    )
+    synthesize(out, preset="tiny", seed=3, physics=physics, workers=1)
+    return out
+
+
+@pytest.fixture(scope="module")
+def pairs(hoard) -> PairSet:
+    return PairSet(hoard, voxel=VOXEL)
+
+
+def test_pairs_are_the_faces_of_one_die_in_the_training_split(hoard, pairs) -> None:
+    truth = load_truth(hoard)
+    train = {f.face_id for f in truth.faces_in("registration_train")}
+    assert pairs.pairs and all(a in train and b in train and a < b for a, b in pairs.pairs)
+    assert all(truth.faces[a].die == truth.faces[b].die for a, b in pairs.pairs)
+    assert len(PairSet(hoard, "registration_test", voxel=VOXEL)) > len(pairs)  # 3 dies of 2-3 faces
+
+
+@pytest.mark.parametrize("augmentation", [TRAINING, VALIDATION])
+def test_matched_points_are_the_same_place_of_the_die(pairs, augmentation) -> None:
+    pair = pairs.make(0, [0, 1, 0], augmentation)
+    i, j = pair.matches.T
+    assert len(pair.matches) > 0.5 * min(len(pair.source), len(pair.target))
+    moved = transform_points(pair.T_target_source, pair.source[i])
+    # Within one voxel in the die's frame, i.e. within the target's scale (<= 1.2) times a voxel here.
+    assert np.linalg.norm(moved - pair.target[j], axis=1).max() <= 1.2 * VOXEL
+    # Unaugmented, the truth of truth.json itself puts them within one voxel.
+    a, b = pairs.pairs[0]
+    T = pairs.truth.T_true(a, b)
+    source, target = pairs.cloud(a), pairs.cloud(b)
+    assert np.linalg.norm(transform_points(T, source[i]) - target[j], axis=1).max() <= VOXEL
+
+
+def test_points_without_a_partner_within_the_radius_are_not_matched() -> None:
+    source = np.array([[0.0, 0, 0], [1, 0, 0], [5, 5, 5]])
+    target = np.array([[1.05, 0, 0], [2.0, 0, 0], [0.0, 0.02, 0]])
+    T = np.eye(4)
+    np.testing.assert_array_equal(match_points(source, target, T, 0.1), [[0, 2], [1, 0]])
+    T[:3, 3] = [1.0, 0, 0]  # moved by 1 mm along x: 0 -> 1.05 (target 0), 1 -> 2 (target 1)
+    np.testing.assert_array_equal(match_points(source, target, T, 0.1), [[0, 0], [1, 1]])
+
+
+def test_augmentation_is_drawn_from_the_seed(pairs) -> None:
+    a, b = pairs.make(0, [5, 2, 0]), pairs.make(0, [5, 2, 0])
+    np.testing.assert_array_equal(a.source, b.source)
+    np.testing.assert_array_equal(a.matches, b.matches)
+    assert not np.allclose(pairs.make(0, [5, 3, 0]).source, a.source)
+
+
+def test_augmentations_stay_within_the_papers_ranges() -> None:
+    rng = np.random.default_rng(0)
+    center = np.array([1.0, 2.0, 3.0])
+    for _ in range(200):
+        A = TRAINING.draw(rng, center)
+        scale = np.cbrt(np.linalg.det(A[:3, :3]))
+        assert 0.9 <= scale <= 1.2
+        angles = Rotation.from_matrix(A[:3, :3] / scale).as_euler("xyz", degrees=True)
+        assert np.all(np.abs(angles[:2]) <= 25.0 + 1e-9)
+        np.testing.assert_allclose(A[:3, :3] @ center + A[:3, 3], center)  # about the centroid
+    spins = [
+        Rotation.from_matrix(VALIDATION.draw(rng, center)[:3, :3]).as_euler("xyz")[2] for _ in range(200)
+    ]
+    assert np.ptp(spins) > np.radians(300)  # z turns cover the circle
+    assert np.allclose(np.linalg.det(VALIDATION.draw(rng, center)[:3, :3]), 1.0)
+    still = Augmentation(tilt_deg=0, spin_deg=0, scale=(1, 1)).draw(rng, center)
+    np.testing.assert_allclose(still, np.eye(4), atol=1e-12)
+
+
+def _truth(dies: dict[str, int]) -> HoardTruth:
+    faces, number = {}, 0
+    for die, size in dies.items():
+        for _ in range(size):
+            number += 1
+            face = f"L{number:04d}D"
+            faces[face] = FaceTruth(face, die, "D", Path(f"{face}.ply"), np.eye(4))
+    return HoardTruth(Path("."), faces, {"registration_train": set(faces)})
+
+
+def test_validation_holds_out_whole_dies() -> None:
+    truth = _truth({"D1": 5, "D2": 4, "D3": 3, "D4": 6})
+    pairs = face_pairs(truth, "registration_train")
+    assert len(pairs) == 10 + 6 + 3 + 15
+    train, val = split_pairs(pairs, truth, 0.2, seed=0)
+    assert sorted(train + val) == sorted(pairs) and val
+    val_dies = {truth.faces[a].die for a, _ in val}
+    assert not val_dies & {truth.faces[a].die for a, _ in train}
+    assert split_pairs(pairs, truth, 0.2, seed=0) == (train, val)
+    assert split_pairs(pairs, truth, 0.0, seed=0) == (pairs, [])
+
+
+def test_a_single_die_lends_some_of_its_pairs_and_a_single_pair_serves_both() -> None:
+    truth = _truth({"D1": 5})
+    pairs = face_pairs(truth, "registration_train")
+    train, val = split_pairs(pairs, truth, 0.2, seed=1)
+    assert len(val) == 2 and sorted(train + val) == sorted(pairs)
+    one = face_pairs(_truth({"D1": 2}), "registration_train")
+    assert split_pairs(one, _truth({"D1": 2}), 0.2, seed=0) == (one, one)
+
+
+def test_a_split_without_pairs_is_refused(hoard) -> None:
+    with pytest.raises(TruthError, match="cluster_val"):
+        PairSet(hoard, "cluster_val")  # one face per die there
