@@ -1,0 +1,124 @@
+"""A global descriptor of a coin face, unchanged by rotation and translation of the coin.
+
+Built on the ``relief`` method's per-face image (``coindie.registration.relief``): the high-passed relief
+of the face in its canonical frame, on a 0.2 mm grid. Then, as in the Fourier–Mellin rotation search of
+:mod:`coindie.registration.planar`:
+
+1. the magnitude of the image's 2-D Fourier transform does not change when the coin is translated (a
+   strike off-centre, a scan not centred) and turns with the coin;
+2. resampled in polar coordinates (radius = spatial frequency, angle in [0, pi)), a rotation becomes a
+   circular shift along the angle;
+3. the magnitudes of a 1-D Fourier transform along the angle do not change under circular shifts: per
+   band of frequencies (log-spaced), the first ``harmonics`` angular harmonics are the descriptor.
+
+Two faces of one die share their design down to the engraver's slips, so their spectra match closely; faces
+of other dies of the same type share the layout but not the details. Measured on synthetic hoards (see
+BENCHMARK.md, "Candidate search"): a same-die partner is among the 10 nearest faces for over 99 % of faces.
+
+Written by hand (a few FFTs) because no maintained library offers a rotation-invariant descriptor of a
+height map; the FFTs and resampling are scipy's.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+from dataclasses import asdict, dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+from scipy import fft, ndimage
+
+from coindie.errors import ParameterError
+from coindie.scan import Scan
+
+FloatArray = NDArray[np.float64]
+
+#: Bumped whenever the descriptor's computation changes, so that cached descriptors are recomputed.
+DESCRIPTOR_VERSION = 1
+
+
+@dataclass(frozen=True)
+class DescriptorSettings:
+    """How the descriptor is computed (the relief image itself follows the ``relief`` method's defaults).
+
+    Attributes:
+        bands: log-spaced bands of spatial frequency (radii of the polar spectrum).
+        harmonics: angular harmonics kept per band (0 = the band's mean level).
+        n_angles: samples of the polar spectrum over [0, pi).
+        window_px: the image is faded to zero over this many pixels inside its footprint, so that the
+            outline of the flan does not dominate the spectrum.
+    """
+
+    bands: int = 24
+    harmonics: int = 24
+    n_angles: int = 360
+    window_px: int = 3
+
+    def __post_init__(self) -> None:
+        for name in ("bands", "n_angles"):
+            if getattr(self, name) < 2:
+                raise ParameterError(f"The {name!r} setting of the descriptor must be >= 2.")
+        if not 0 <= self.harmonics < self.n_angles // 2:
+            raise ParameterError(
+                f"The 'harmonics' setting must be in [0, n_angles / 2). Got {self.harmonics}."
+            )
+        if self.window_px < 0:
+            raise ParameterError(f"The 'window_px' setting must be >= 0. Got {self.window_px}.")
+
+    @property
+    def size(self) -> int:
+        """Length of the descriptor (at most: close low bands may merge on small images)."""
+        return self.bands * (self.harmonics + 1)
+
+    def digest(self) -> str:
+        """A short hash of the settings and the descriptor's version (cache key)."""
+        text = json.dumps({"version": DESCRIPTOR_VERSION, **asdict(self)}, sort_keys=True)
+        return hashlib.sha256(text.encode()).hexdigest()[:16]
+
+
+def relief_descriptor(
+    detail: FloatArray, mask: NDArray[np.bool_], settings: DescriptorSettings | None = None
+) -> NDArray[np.float32]:
+    """The descriptor of a relief image (``detail`` in mm on a square grid, ``mask`` its footprint): the
+    angular-harmonic magnitudes of its polar power spectrum, per frequency band, as float32."""
+    settings = settings or DescriptorSettings()
+    if detail.ndim != 2 or detail.shape[0] != detail.shape[1] or detail.shape != mask.shape:
+        raise ParameterError(f"the relief image must be square with a mask of its shape, got {detail.shape}")
+    inside = ndimage.distance_transform_cdt(np.pad(mask, 1), metric="taxicab")[1:-1, 1:-1]
+    fade = max(1, settings.window_px)
+    window = ndimage.gaussian_filter((inside > settings.window_px).astype(np.float64), fade)
+    image = np.where(mask, detail, 0.0) * window
+    size = image.shape[0]
+    spectrum = np.abs(fft.fftshift(fft.fft2(image)))
+    radii = np.arange(2, size // 2 - 1, dtype=np.float64)
+    angles = np.linspace(0.0, np.pi, settings.n_angles, endpoint=False)
+    rows = size / 2 + radii[:, None] * np.sin(angles)[None, :]
+    cols = size / 2 + radii[:, None] * np.cos(angles)[None, :]
+    # heights in mm are small: scale to microns before log1p so that the log compresses the peaks
+    polar = np.log1p(1e3 * ndimage.map_coordinates(spectrum, [rows, cols], order=1))
+    edges = _band_edges(len(radii), settings.bands)
+    bands = np.stack([polar[a:b].mean(axis=0) for a, b in zip(edges[:-1], edges[1:], strict=True)])
+    harmonics = np.abs(fft.rfft(bands, axis=1))[:, : settings.harmonics + 1] / settings.n_angles
+    out = np.zeros((settings.bands, settings.harmonics + 1), dtype=np.float32)
+    out[: len(harmonics)] = harmonics
+    return out.ravel()
+
+
+def _band_edges(n_radii: int, n_bands: int) -> list[int]:
+    """Log-spaced, strictly increasing band edges over ``n_radii`` radii (each band at least one radius)."""
+    edges = [0]
+    for value in np.geomspace(1, n_radii, n_bands + 1)[1:]:
+        edges.append(max(edges[-1] + 1, int(round(value))))
+    return [e for e in edges if e <= n_radii] or [0, n_radii]
+
+
+def face_descriptor(scan: Scan, settings: DescriptorSettings | None = None) -> NDArray[np.float32]:
+    """The descriptor of a face (grid-sampled at 0.1 mm, as the ``relief`` method registers it): its relief
+    image made exactly as the ``relief`` method makes it, then :func:`relief_descriptor`."""
+    from coindie.registration import get_method
+    from coindie.registration.geometry import Cloud
+
+    pipeline = get_method("relief")
+    prepared = pipeline.estimator.prepare(Cloud.canonical(scan))  # type: ignore[attr-defined]
+    return relief_descriptor(prepared.image.detail, prepared.image.mask, settings)

@@ -1,0 +1,102 @@
+"""``coindie init``, ``coindie run``, ``coindie status``: a die study as a resumable project."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from coindie.cli.app import app, exits_cleanly
+
+
+@app.command("init")
+@exits_cleanly
+def init(
+    project: Annotated[
+        Path, typer.Argument(help="Project folder (created; an existing one gets the new scans).")
+    ],
+    scans_dir: Annotated[Path, typer.Argument(help="Folder of scan files (PLY, STL, OBJ).")],
+    labels: Annotated[
+        Path | None, typer.Option(help="Die labels (coin_id,die_id or name, die), for evaluation only.")
+    ] = None,
+) -> None:
+    """Create a project from a folder of scans (files are listed now, read by `coindie run`)."""
+    from coindie.project import init_project
+
+    created, report = init_project(project, scans_dir, labels)
+    n = len(created.scans())
+    typer.echo(
+        f"{created.folder}: {n} faces ({len(report.added)} new, {len(report.changed)} changed, "
+        f"{report.unchanged} unchanged)" + (f", {len(created.labels())} labels" if labels else "")
+    )
+    for skipped in report.skipped:
+        typer.echo(f"skipped: {skipped}")
+
+
+@app.command("run")
+@exits_cleanly
+def run(
+    project: Annotated[Path, typer.Argument(help="Project folder made by coindie init.")],
+    method: Annotated[str, typer.Option(help="Registration method (see coindie methods).")] = "relief",
+    workers: Annotated[int, typer.Option(help="Worker processes (0: one per core).")] = 0,
+    dask: Annotated[
+        str | None,
+        typer.Option(help="Dask scheduler address (tcp://host:8786), or 'local' for a LocalCluster."),
+    ] = None,
+    exhaustive: Annotated[bool, typer.Option("--exhaustive", help="Score every pair of each side.")] = False,
+    candidates: Annotated[
+        int | None, typer.Option(help="Score only each face's K nearest faces by descriptor.")
+    ] = None,
+    classifier: Annotated[
+        Path | None, typer.Option(help="Same-die classifier JSON (default: the shipped model).")
+    ] = None,
+    batch_faces: Annotated[int, typer.Option(help="Faces per side of a batch's tile.")] = 16,
+    retry_failed: Annotated[bool, typer.Option(help="Score again the pairs that failed before.")] = False,
+    plan_only: Annotated[
+        bool, typer.Option(help="Prepare the faces and plan the pairs, score none (see coindie status).")
+    ] = False,
+) -> None:
+    """Prepare new faces, plan the pairs, score them in batches (resumable: kill it, run it again)."""
+    from coindie.cli.progress import counting_progress
+    from coindie.errors import ParameterError
+    from coindie.project import open_project
+    from coindie.project.run import DEFAULT_K, RunConfig, run_project
+
+    if exhaustive and candidates is not None:
+        raise ParameterError("--exhaustive and --candidates K exclude each other")
+    mode = "exhaustive" if exhaustive else "candidates" if candidates is not None else "auto"
+    config = RunConfig(
+        method=method,
+        mode=mode,
+        k=candidates or DEFAULT_K,
+        workers=workers,
+        dask=dask,
+        batch_faces=batch_faces,
+        classifier=str(classifier) if classifier else None,
+        retry_failed=retry_failed,
+        plan_only=plan_only,
+    )
+    report = run_project(open_project(project), config, progress=counting_progress, echo=typer.echo)
+    rate = report.pairs_done / report.stage_seconds["pairs"] if report.stage_seconds.get("pairs") else 0.0
+    typer.echo(
+        f"run {report.run_id} finished in {report.seconds:.1f} s: {report.faces_prepared} faces prepared "
+        f"({len(report.faces_failed)} bad), {report.pairs_done} pairs scored ({rate:.2f} pairs/s), "
+        f"{report.pairs_failed} failed"
+    )
+
+
+@app.command("status")
+@exits_cleanly
+def status(
+    project: Annotated[Path, typer.Argument(help="Project folder.")],
+    json_output: Annotated[bool, typer.Option("--json", help="Machine-readable output.")] = False,
+) -> None:
+    """Counts of faces and pairs, progress of the last run, its ETA, and every error."""
+    import json
+
+    from coindie.project import open_project
+    from coindie.project.status import project_status
+
+    summary = project_status(open_project(project))
+    typer.echo(json.dumps(summary.to_dict(), indent=2) if json_output else summary.text())

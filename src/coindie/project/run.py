@@ -1,0 +1,521 @@
+"""A run of a project: per-face work once, then the pairs of each side in batches, committed as they come.
+
+1. **Faces** (O(n)): every new or changed scan is hashed, grid-sampled and described by a worker
+   (:func:`coindie.project.work.prepare_face`); a bad scan is recorded with its error and left out.
+2. **Plan**: per side (obverses with and without beard together, reverses), either every pair
+   (exhaustive) or the candidate pairs of :mod:`coindie.candidates` (each face's K nearest faces by
+   descriptor). ``auto`` (the default) is exhaustive up to ``AUTO_EXHAUSTIVE_MAX_FACES`` faces per side
+   and says so when it switches. Planned pairs are rows of ``pairs`` (status ``todo``), keyed by the faces
+   and a hash of every parameter the result depends on: a rerun, or a run after new scans were added,
+   plans only what is not there yet.
+3. **Pairs**: the todo pairs are ordered so that linked faces are close (reverse Cuthill–McKee on the
+   pair graph), cut into tiles of at most ``batch_faces`` x ``batch_faces`` faces, and scored by the
+   workers (:func:`coindie.project.work.score_batch`). Each batch's results are committed in one
+   transaction: killing the run at any moment loses at most the batches in flight, and no committed pair
+   is ever computed again.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import itertools
+import json
+import os
+import platform
+import socket
+import time
+from collections.abc import Callable, Iterator
+from contextlib import AbstractContextManager, contextmanager
+from dataclasses import asdict, dataclass, field
+from typing import Any
+
+import numpy as np
+
+from coindie import __version__
+from coindie.errors import CoinDieError
+from coindie.project.backends import Backend, WorkerLost, make_backend
+from coindie.project.store import Project, ProjectError, now
+from coindie.project.work import (
+    PAIR_FUNCTION_VERSION,
+    FaceTask,
+    PairBatch,
+    face_params_hash,
+    prepare_face,
+    score_batch,
+)
+
+#: ``auto`` plans every pair of a side up to this many faces (~20,000 pairs: ~20 min on 2 cores at the
+#: measured ~0.1 s per pair); above it, the candidate search.
+AUTO_EXHAUSTIVE_MAX_FACES = 200
+#: Candidates per face in candidate mode (see BENCHMARK.md, "Candidate search", for the recall vs K).
+DEFAULT_K = 20
+#: Faces per side of a batch's tile: a batch touches at most 2 x this many faces, each loaded once.
+DEFAULT_BATCH_FACES = 16
+MODES = ("auto", "exhaustive", "candidates")
+
+Progress = Callable[[str], AbstractContextManager[Callable[[int, int], None]]]
+Echo = Callable[[str], None]
+
+
+@dataclass(frozen=True)
+class RunConfig:
+    """The settings of a run (stored with it). The grid of the per-face cache is the histogram's finest."""
+
+    method: str = "relief"
+    method_params: dict[str, Any] = field(default_factory=dict)
+    mode: str = "auto"
+    k: int = DEFAULT_K
+    workers: int = 0
+    dask: str | None = None
+    batch_faces: int = DEFAULT_BATCH_FACES
+    classifier: str | None = None
+    registration_grid_mm: float = 0.1
+    retry_failed: bool = False
+    plan_only: bool = False
+
+    def __post_init__(self) -> None:
+        if self.mode not in MODES:
+            raise ProjectError(f"unknown run mode {self.mode!r}; known: {', '.join(MODES)}")
+        if self.k < 1:
+            raise ProjectError(f"--candidates K needs K >= 1, got {self.k}")
+        if self.batch_faces < 1:
+            raise ProjectError(f"batch_faces must be >= 1, got {self.batch_faces}")
+        if self.workers < 0:
+            raise ProjectError(f"--workers must be >= 0 (0: one per core), got {self.workers}")
+
+
+@dataclass
+class SidePlan:
+    side: str
+    n_faces: int
+    mode: str
+    n_pairs: int
+    n_new: int
+
+
+@dataclass
+class RunReport:
+    run_id: int
+    backend: str
+    faces_prepared: int = 0
+    faces_failed: list[str] = field(default_factory=list)
+    plans: list[SidePlan] = field(default_factory=list)
+    pairs_done: int = 0
+    pairs_failed: int = 0
+    batches_lost: int = 0
+    seconds: float = 0.0
+    stage_seconds: dict[str, float] = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class _Scorer:
+    """The parameters every pair result depends on, and their hash."""
+
+    config_text: str
+    params_hash: str
+
+
+def run_project(
+    project: Project, config: RunConfig | None = None, *, progress: Progress | None = None, echo: Echo = print
+) -> RunReport:
+    """Run the project to completion (see the module docstring); returns what was done."""
+    config = config or RunConfig()
+    progress = progress or _no_progress
+    start = time.perf_counter()
+    scorer = _scorer(config)
+    refreshed = project.refresh()
+    if refreshed.added or refreshed.changed:
+        echo(f"{len(refreshed.added)} new and {len(refreshed.changed)} changed scan(s) found")
+    for skipped in refreshed.skipped:
+        echo(f"skipped: {skipped}")
+    run_id = _start_run(project, config, scorer.params_hash)
+    backend = make_backend(config.workers, config.dask)
+    report = RunReport(run_id, backend.description)
+    echo(f"run {run_id} on {backend.description}")
+    status, message = "failed", ""
+    try:
+        mark = time.perf_counter()
+        _prepare_faces(project, config, backend, report, progress, echo)
+        report.stage_seconds["faces"] = time.perf_counter() - mark
+        mark = time.perf_counter()
+        report.plans = _plan(project, config, scorer.params_hash, run_id, echo)
+        report.stage_seconds["plan"] = time.perf_counter() - mark
+        if not config.plan_only:
+            mark = time.perf_counter()
+            _score_pairs(project, config, scorer, backend, report, progress)
+            report.stage_seconds["pairs"] = time.perf_counter() - mark
+        status = "finished"
+    except KeyboardInterrupt:
+        status, message = "interrupted", "interrupted by the user"
+        raise
+    except CoinDieError as error:
+        message = str(error)
+        raise
+    finally:
+        backend.close()
+        report.seconds = time.perf_counter() - start
+        _end_run(project, run_id, status, message)
+    return report
+
+
+@contextmanager
+def _no_progress(what: str) -> Iterator[Callable[[int, int], None]]:
+    yield lambda advance, total: None
+
+
+# ------------------------------------------------------------------------------------------------ config
+
+
+def _scorer(config: RunConfig) -> _Scorer:
+    """Resolve the method's full parameters and the classifier; hash everything a pair depends on."""
+    from coindie.registration import get_method
+
+    registrar = get_method(config.method, **config.method_params)
+    classifier = _classifier(config.classifier)
+    classifier_dict = classifier.to_dict()
+    payload = {
+        "method": config.method,
+        "method_params": dict(config.method_params),
+        "registration_grid_mm": config.registration_grid_mm,
+        "classifier": classifier_dict,
+    }
+    identity = {
+        "pair_function": PAIR_FUNCTION_VERSION,
+        "method": config.method,
+        "resolved_params": {k: repr(v) for k, v in sorted(registrar.params.items())},
+        "registration_grid_mm": config.registration_grid_mm,
+        "classifier": classifier_dict,
+        "faces": face_params_hash(_cache_grid(classifier), config.registration_grid_mm),
+    }
+    digest = hashlib.sha256(json.dumps(identity, sort_keys=True, default=str).encode()).hexdigest()[:16]
+    return _Scorer(json.dumps(payload, sort_keys=True), digest)
+
+
+def _classifier(path: str | None) -> Any:
+    from coindie.similarity import SameDieClassifier
+
+    try:
+        return SameDieClassifier.load(path) if path else SameDieClassifier.load_default()
+    except CoinDieError:
+        raise
+    except (OSError, ValueError) as error:
+        where = path or "the shipped model"
+        raise ProjectError(f"cannot load the same-die classifier ({where}): {error}") from None
+
+
+def _cache_grid(classifier: Any) -> float:
+    """The per-face cache keeps the finest grid the histogram samples (paper's text: target 0.05 mm)."""
+    settings = classifier.settings
+    return float(min(settings.source_grid_mm, settings.target_grid_mm))
+
+
+def _start_run(project: Project, config: RunConfig, params_hash: str) -> int:
+    _check_no_other_run(project)
+    with project.transaction() as db:
+        cursor = db.execute(
+            "INSERT INTO runs (started_at, updated_at, status, version, params_hash, config, pid, host) "
+            "VALUES (?, ?, 'running', ?, ?, ?, ?, ?)",
+            (
+                now(), now(), __version__, params_hash, json.dumps(_effective(config), sort_keys=True),
+                os.getpid(), socket.gethostname(),
+            ),
+        )  # fmt: skip
+    return int(cursor.lastrowid or 0)
+
+
+def _effective(config: RunConfig) -> dict[str, Any]:
+    return {**asdict(config), "python": platform.python_version(), "cpu_count": os.cpu_count()}
+
+
+def _check_no_other_run(project: Project) -> None:
+    """Two runs writing one project would compute the same pairs twice: refuse while another lives."""
+    for row in project.db.execute("SELECT run_id, pid, host FROM runs WHERE status = 'running'"):
+        alive = row["host"] == socket.gethostname() and _pid_alive(row["pid"])
+        if alive and row["pid"] != os.getpid():
+            raise ProjectError(
+                f"{project.folder}: run {row['run_id']} (process {row['pid']}) is still running"
+            )
+        with project.transaction() as db:  # a run that died without closing (kill -9)
+            db.execute("UPDATE runs SET status = 'killed' WHERE run_id = ?", (row["run_id"],))
+
+
+def _pid_alive(pid: int | None) -> bool:
+    if not pid:
+        return False
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    return True
+
+
+def _end_run(project: Project, run_id: int, status: str, message: str) -> None:
+    with project.transaction() as db:
+        db.execute(
+            "UPDATE runs SET status = ?, ended_at = ?, updated_at = ?, message = ? WHERE run_id = ?",
+            (status, now(), now(), message, run_id),
+        )
+
+
+# ------------------------------------------------------------------------------------------------- faces
+
+
+def _prepare_faces(
+    project: Project, config: RunConfig, backend: Backend, report: RunReport, progress: Progress, echo: Echo
+) -> None:
+    classifier = _classifier(config.classifier)
+    grid = _cache_grid(classifier)
+    params = face_params_hash(grid, config.registration_grid_mm)
+    tasks = []
+    for scan in project.scans():
+        if scan.status == "error":
+            continue
+        if scan.status == "ok" and scan.content_hash and project.cached_file(scan.content_hash, params):
+            continue
+        tasks.append(
+            FaceTask(
+                scan.face_id, scan.path, str(project.cache_dir), params, grid, config.registration_grid_mm
+            )
+        )
+    if not tasks:
+        return
+    with progress("faces") as update:
+        update(0, len(tasks))
+        for index, result in backend.map_unordered(prepare_face, tasks):
+            if isinstance(result, BaseException):
+                result = {"face_id": tasks[index].face_id, "error": f"{tasks[index].path}: {result}"}
+            _record_face(project, params, result)
+            if "error" in result:
+                report.faces_failed.append(result["error"])
+                echo(f"bad scan, left out: {result['error']}")
+            else:
+                report.faces_prepared += 1
+            update(1, 0)
+
+
+def _record_face(project: Project, params: str, result: dict[str, Any]) -> None:
+    with project.transaction() as db:
+        if "error" in result:
+            db.execute(
+                "UPDATE scans SET status = 'error', error = ?, prepared_at = ? WHERE face_id = ?",
+                (result["error"], now(), result["face_id"]),
+            )
+            return
+        db.execute(
+            "INSERT OR REPLACE INTO scan_cache VALUES (?, ?, ?, ?, ?, ?, ?)",
+            (
+                result["content_hash"], params, result["file"], result["n_points"], result["descriptor"],
+                result["seconds"], now(),
+            ),
+        )  # fmt: skip
+        db.execute(
+            "UPDATE scans SET status = 'ok', error = NULL, content_hash = ?, n_points = ?, prepared_at = ? "
+            "WHERE face_id = ?",
+            (result["content_hash"], result["n_points"], now(), result["face_id"]),
+        )
+
+
+# -------------------------------------------------------------------------------------------------- plan
+
+
+def _plan(project: Project, config: RunConfig, params_hash: str, run_id: int, echo: Echo) -> list[SidePlan]:
+    face_params = _face_params(project, config)
+    rows = project.db.execute(
+        "SELECT s.face_id, s.side, c.descriptor FROM scans s JOIN scan_cache c "
+        "ON c.content_hash = s.content_hash AND c.params_hash = ? WHERE s.status = 'ok' ORDER BY s.face_id",
+        (face_params,),
+    ).fetchall()
+    plans = []
+    for side in sorted({r["side"] for r in rows}):
+        faces = [r["face_id"] for r in rows if r["side"] == side]
+        mode = config.mode
+        if mode == "auto":
+            mode = "exhaustive" if len(faces) <= AUTO_EXHAUSTIVE_MAX_FACES else "candidates"
+        if mode == "exhaustive":
+            pairs: Iterator[tuple[str, str]] | list[tuple[str, str]] = itertools.combinations(faces, 2)
+        else:
+            descriptors = np.stack(
+                [np.frombuffer(r["descriptor"], np.float32) for r in rows if r["side"] == side]
+            )
+            pairs = candidate_face_pairs(faces, descriptors, config.k)
+        n_before = _count(project, params_hash, side)
+        with project.transaction() as db:
+            db.executemany(
+                "INSERT OR IGNORE INTO pairs (source, target, params_hash, side, origin, planned_run) "
+                "VALUES (?, ?, ?, ?, ?, ?)",
+                ((a, b, params_hash, side, mode, run_id) for a, b in pairs),
+            )
+        n_after = _count(project, params_hash, side)
+        plan = SidePlan(side, len(faces), mode, n_after, n_after - n_before)
+        plans.append(plan)
+        echo(_plan_line(plan, config))
+    return plans
+
+
+def candidate_face_pairs(faces: list[str], descriptors: np.ndarray, k: int) -> list[tuple[str, str]]:
+    """(source, target) face ids, source < target, of the candidate pairs: each face's ``k`` nearest."""
+    from coindie.candidates import candidate_pairs, nearest_neighbours
+
+    if len(faces) < 2:
+        return []
+    neighbours, _ = nearest_neighbours(descriptors, k)
+    pairs = {tuple(sorted((faces[i], faces[j]))) for i, j in candidate_pairs(neighbours)}
+    return sorted(pairs)  # type: ignore[arg-type]
+
+
+def _plan_line(plan: SidePlan, config: RunConfig) -> str:
+    side = {"D": "obverses", "R": "reverses"}.get(plan.side, f"faces of side {plan.side}")
+    full = plan.n_faces * (plan.n_faces - 1) // 2
+    text = f"{side}: {plan.n_faces} faces, "
+    if plan.mode == "exhaustive":
+        text += f"every pair ({full:,})"
+    else:
+        text += f"candidate search, K = {config.k}: {plan.n_pairs:,} pairs instead of {full:,}"
+        if config.mode == "auto":
+            text += (
+                f" (auto: exhaustive only up to {AUTO_EXHAUSTIVE_MAX_FACES} faces per side; "
+                "--exhaustive forces it)"
+            )
+    return text + f"; {plan.n_new:,} newly planned"
+
+
+def _face_params(project: Project, config: RunConfig) -> str:
+    return face_params_hash(_cache_grid(_classifier(config.classifier)), config.registration_grid_mm)
+
+
+def _count(project: Project, params_hash: str, side: str) -> int:
+    row = project.db.execute(
+        "SELECT COUNT(*) AS n FROM pairs WHERE params_hash = ? AND side = ?", (params_hash, side)
+    ).fetchone()
+    return int(row["n"])
+
+
+# ------------------------------------------------------------------------------------------------- pairs
+
+
+def _score_pairs(
+    project: Project,
+    config: RunConfig,
+    scorer: _Scorer,
+    backend: Backend,
+    report: RunReport,
+    progress: Progress,
+) -> None:
+    statuses = ("todo", "failed") if config.retry_failed else ("todo",)
+    marks = ",".join("?" * len(statuses))
+    query = f"SELECT source, target FROM pairs WHERE params_hash = ? AND status IN ({marks})"
+    todo = [(r["source"], r["target"]) for r in project.db.execute(query, (scorer.params_hash, *statuses))]
+    if not todo:
+        return
+    files = _cache_files(project, config)
+    batches = [
+        PairBatch(
+            tuple(pairs),
+            tuple(sorted((face, files[face]) for face in {f for pair in pairs for f in pair})),
+            scorer.config_text,
+            2 * config.batch_faces,
+        )
+        for pairs in tile_batches(todo, config.batch_faces)
+    ]
+    with progress("pairs") as update:
+        update(0, len(todo))
+        for index, result in backend.map_unordered(score_batch, batches):
+            if isinstance(result, BaseException):
+                report.batches_lost += 1
+                reason = f"batch lost: {result}"
+                if isinstance(result, WorkerLost):
+                    reason = f"worker lost: {result}"
+                result = [
+                    {"source": s, "target": t, "status": "failed", "reason": reason}
+                    for s, t in batches[index].pairs
+                ]
+            _commit(project, scorer.params_hash, report.run_id, result)
+            done = sum(r["status"] == "done" for r in result)
+            report.pairs_done += done
+            report.pairs_failed += len(result) - done
+            update(len(result), 0)
+
+
+def _cache_files(project: Project, config: RunConfig) -> dict[str, str]:
+    params = _face_params(project, config)
+    rows = project.db.execute(
+        "SELECT s.face_id, c.file FROM scans s JOIN scan_cache c "
+        "ON c.content_hash = s.content_hash AND c.params_hash = ? WHERE s.status = 'ok'",
+        (params,),
+    )
+    return {r["face_id"]: str(project.cache_dir / r["file"]) for r in rows}
+
+
+def tile_batches(pairs: list[tuple[str, str]], batch_faces: int) -> list[list[tuple[str, str]]]:
+    """Cut pairs into batches touching at most ``2 * batch_faces`` faces each, so a worker loads each
+    face once per batch: faces are ordered by reverse Cuthill–McKee on the pair graph (linked faces get
+    close positions), pairs grouped by tile of that order, small tiles merged. Within a batch pairs are
+    sorted by target, then source."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import reverse_cuthill_mckee
+
+    faces = sorted({face for pair in pairs for face in pair})
+    index = {face: i for i, face in enumerate(faces)}
+    rows = np.array([index[a] for a, _ in pairs], dtype=np.int64)
+    cols = np.array([index[b] for _, b in pairs], dtype=np.int64)
+    graph = coo_matrix((np.ones(len(pairs), dtype=np.int8), (rows, cols)), shape=(len(faces), len(faces)))
+    graph = (graph + graph.T).tocsr()
+    order = reverse_cuthill_mckee(graph, symmetric_mode=True)
+    position = np.empty(len(faces), dtype=np.int64)
+    position[order] = np.arange(len(faces))
+    tiles: dict[tuple[int, int], list[tuple[str, str]]] = {}
+    for (a, b), i, j in zip(pairs, rows, cols, strict=True):
+        p, q = sorted((int(position[i]), int(position[j])))
+        tiles.setdefault((p // batch_faces, q // batch_faces), []).append((a, b))
+    batches: list[list[tuple[str, str]]] = []
+    current: list[tuple[str, str]] = []
+    current_faces: set[str] = set()
+    for key in sorted(tiles):
+        tile = tiles[key]
+        tile_faces = {face for pair in tile for face in pair}
+        if current and len(current_faces | tile_faces) > 2 * batch_faces:
+            batches.append(current)
+            current, current_faces = [], set()
+        current += tile
+        current_faces |= tile_faces
+    if current:
+        batches.append(current)
+    return [sorted(batch, key=lambda pair: (pair[1], pair[0])) for batch in batches]
+
+
+def _commit(project: Project, params_hash: str, run_id: int, rows: list[dict[str, Any]]) -> None:
+    """One batch, atomically; a pair already done (by an earlier run) is never overwritten."""
+    stamp = now()
+    seconds = sum(json.loads(r["timings"]).get("total", 0.0) for r in rows if r.get("timings"))
+    with project.transaction() as db:
+        db.executemany(
+            "UPDATE pairs SET status = ?, method = ?, valid = ?, reason = ?, probability = ?, residual = ?, "
+            "T_target_source = ?, histogram = ?, timings = ?, run_id = ?, done_at = ? "
+            "WHERE source = ? AND target = ? AND params_hash = ? AND status != 'done'",
+            [
+                (
+                    r["status"],
+                    r.get("method"),
+                    r.get("valid"),
+                    r.get("reason"),
+                    r.get("probability"),
+                    r.get("residual"),
+                    r.get("T_target_source"),
+                    r.get("histogram"),
+                    r.get("timings"),
+                    run_id,
+                    stamp,
+                    r["source"],
+                    r["target"],
+                    params_hash,
+                )  # fmt: skip
+                for r in rows
+            ],
+        )
+        db.execute(
+            "UPDATE runs SET pairs_done = pairs_done + ?, pairs_seconds = pairs_seconds + ?, updated_at = ? "
+            "WHERE run_id = ?",
+            (len(rows), seconds, stamp, run_id),
+        )

@@ -1,0 +1,88 @@
+"""Where a project stands: faces by status, pairs by status and side, the last run's rate and ETA, errors."""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass, field
+from typing import Any
+
+from coindie.project.store import Project, elapsed_since
+
+
+@dataclass
+class ProjectStatus:
+    folder: str
+    faces: dict[str, int]
+    pairs: dict[str, dict[str, int]]  # side -> status -> count (the latest parameter set)
+    last_run: dict[str, Any] | None
+    pairs_per_second: float | None
+    eta_seconds: float | None
+    face_errors: list[str] = field(default_factory=list)
+    pair_errors: list[str] = field(default_factory=list)
+
+    def to_dict(self) -> dict[str, Any]:
+        return asdict(self)
+
+    def text(self) -> str:
+        lines = [f"project {self.folder}"]
+        lines.append("faces: " + ", ".join(f"{n} {status}" for status, n in sorted(self.faces.items())))
+        for side, counts in sorted(self.pairs.items()):
+            total = sum(counts.values())
+            done = counts.get("done", 0)
+            share = f" ({done / total:.1%})" if total else ""
+            details = ", ".join(f"{n} {status}" for status, n in sorted(counts.items()))
+            lines.append(f"pairs of side {side}: {total} planned, {done} done{share}: {details}")
+        if self.last_run:
+            run = self.last_run
+            lines.append(
+                f"last run {run['run_id']}: {run['status']}, started {run['started_at']}, "
+                f"{run['pairs_done']} pairs committed"
+            )
+        if self.pairs_per_second:
+            lines.append(f"rate {self.pairs_per_second:.2f} pairs/s")
+        if self.eta_seconds is not None:
+            lines.append(f"ETA {_duration(self.eta_seconds)} for the remaining pairs at that rate")
+        lines += [f"bad scan: {error}" for error in self.face_errors]
+        lines += [f"failed pair: {error}" for error in self.pair_errors]
+        return "\n".join(lines)
+
+
+def project_status(project: Project, max_errors: int = 50) -> ProjectStatus:
+    db = project.db
+    faces = {
+        r["status"]: r["n"] for r in db.execute("SELECT status, COUNT(*) AS n FROM scans GROUP BY status")
+    }
+    params = project.current_params()
+    pairs: dict[str, dict[str, int]] = {}
+    for r in db.execute(
+        "SELECT side, status, COUNT(*) AS n FROM pairs WHERE params_hash = ? GROUP BY side, status", (params,)
+    ):
+        pairs.setdefault(r["side"], {})[r["status"]] = r["n"]
+    run = db.execute("SELECT * FROM runs ORDER BY run_id DESC LIMIT 1").fetchone()
+    last_run = dict(run) if run else None
+    rate = eta = None
+    if run and run["pairs_done"] and run["updated_at"]:
+        seconds = elapsed_since(run["started_at"]) - elapsed_since(run["updated_at"])
+        rate = run["pairs_done"] / seconds if seconds > 0 else None
+        remaining = sum(counts.get("todo", 0) for counts in pairs.values())
+        eta = remaining / rate if rate and remaining else None
+    face_errors = [
+        f"{r['face_id']}: {r['error']}" for r in db.execute("SELECT * FROM scans WHERE status = 'error'")
+    ]
+    pair_errors = [
+        f"{r['source']}-{r['target']}: {r['reason']}"
+        for r in db.execute(
+            "SELECT source, target, reason FROM pairs WHERE params_hash = ? AND status = 'failed' LIMIT ?",
+            (params, max_errors),
+        )
+    ]
+    return ProjectStatus(
+        str(project.folder), faces, pairs, last_run, rate, eta, face_errors[:max_errors], pair_errors
+    )
+
+
+def _duration(seconds: float) -> str:
+    if seconds < 120:
+        return f"{seconds:.0f} s"
+    if seconds < 7200:
+        return f"{seconds / 60:.0f} min"
+    return f"{seconds / 3600:.1f} h"

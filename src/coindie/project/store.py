@@ -1,0 +1,343 @@
+"""The project folder and its database: scans, per-face cache, pairs, runs, labels, edits.
+
+A project is ``FOLDER/project.sqlite`` plus ``FOLDER/cache/``. Everything a run needs to resume is in the
+database; every write is a short transaction, so a killed process leaves the file consistent. Paths of
+scans are stored absolute (a Dask worker on another machine needs the same mount).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import sqlite3
+import time
+from collections.abc import Iterator, Mapping
+from contextlib import contextmanager
+from dataclasses import dataclass, field
+from datetime import UTC, datetime
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from coindie.errors import CoinDieError
+from coindie.ids import FaceId, parse_face_id
+from coindie.project.schema import PRAGMAS, SCHEMA, SCHEMA_VERSION
+
+if TYPE_CHECKING:
+    from coindie.clustering import ProbabilityGraph
+
+DB_NAME = "project.sqlite"
+CACHE_DIR = "cache"
+
+
+class ProjectError(CoinDieError):
+    """A project folder is missing, not a project, of another version, or asked something impossible."""
+
+
+def now() -> str:
+    """UTC time stamp, ISO 8601 to the millisecond."""
+    return datetime.now(UTC).isoformat(timespec="milliseconds")
+
+
+@dataclass(frozen=True)
+class ScanRow:
+    """One face of the project."""
+
+    face_id: str
+    name: str
+    side: str
+    path: str
+    content_hash: str | None
+    status: str
+    error: str | None
+    n_points: int | None
+
+
+@dataclass
+class AddReport:
+    """What adding a scan folder did: faces new, changed (their pairs dropped), unchanged, and files
+    that could not be listed (duplicates of a face)."""
+
+    added: list[str] = field(default_factory=list)
+    changed: list[str] = field(default_factory=list)
+    unchanged: int = 0
+    skipped: list[str] = field(default_factory=list)
+
+
+def side_of(face_id: FaceId) -> str:
+    """The die study a face belongs to: ``D`` (obverses, with and without beard), ``R``, or ``?`` for ids
+    that name no face (compared among themselves)."""
+    return face_id.face.value
+
+
+def init_project(
+    folder: str | Path, scans_dir: str | Path, labels: str | Path | None = None
+) -> tuple[Project, AddReport]:
+    """Create the project (or open it again) and add the scans of ``scans_dir``; ``labels`` (a CSV
+    ``coin_id,die_id`` or ``name, die``) are stored for evaluation only."""
+    from coindie.io.labels import read_labels
+
+    folder = Path(folder)
+    if folder.exists() and not folder.is_dir():
+        raise ProjectError(f"{folder}: exists and is not a folder")
+    checked_labels = read_labels(labels) if labels is not None else None
+    folder.mkdir(parents=True, exist_ok=True)
+    project = Project(folder)
+    project.create()
+    report = project.add_scans(scans_dir)
+    if checked_labels is not None:
+        project.set_labels({str(k): v for k, v in checked_labels.items()}, str(Path(labels).resolve()))
+    return project, report
+
+
+def open_project(folder: str | Path) -> Project:
+    """An existing project; ``ProjectError`` naming the folder when there is none."""
+    folder = Path(folder)
+    if not (folder / DB_NAME).is_file():
+        raise ProjectError(f"{folder}: not a coindie project (no {DB_NAME}; create one with coindie init)")
+    project = Project(folder)
+    project.check_version()
+    return project
+
+
+class Project:
+    """A project folder. Connections are opened per process (SQLite connections do not cross forks)."""
+
+    def __init__(self, folder: str | Path) -> None:
+        self.folder = Path(folder).resolve()
+        self.db_path = self.folder / DB_NAME
+        self.cache_dir = self.folder / CACHE_DIR
+        self._connection: sqlite3.Connection | None = None
+        self._pid = os.getpid()
+
+    def __repr__(self) -> str:
+        return f"Project({str(self.folder)!r})"
+
+    # ---------------------------------------------------------------------------------------- database
+
+    @property
+    def db(self) -> sqlite3.Connection:
+        if self._connection is None or self._pid != os.getpid():
+            self._connection = sqlite3.connect(self.db_path, timeout=30.0, isolation_level=None)
+            self._connection.row_factory = sqlite3.Row
+            for pragma in PRAGMAS:
+                self._connection.execute(pragma)
+            self._pid = os.getpid()
+        return self._connection
+
+    def close(self) -> None:
+        if self._connection is not None:
+            self._connection.close()
+            self._connection = None
+
+    @contextmanager
+    def transaction(self) -> Iterator[sqlite3.Connection]:
+        """One atomic write: everything inside is committed together or not at all."""
+        db = self.db
+        db.execute("BEGIN IMMEDIATE")
+        try:
+            yield db
+        except BaseException:
+            db.execute("ROLLBACK")
+            raise
+        db.execute("COMMIT")
+
+    def create(self) -> None:
+        self.cache_dir.mkdir(parents=True, exist_ok=True)
+        self.db.executescript(f"BEGIN IMMEDIATE;{SCHEMA}COMMIT;")  # executescript runs its own statements
+        with self.transaction() as db:
+            db.execute("INSERT OR IGNORE INTO meta VALUES ('schema_version', ?)", (str(SCHEMA_VERSION),))
+            db.execute("INSERT OR IGNORE INTO meta VALUES ('created_at', ?)", (now(),))
+        self.check_version()
+
+    def check_version(self) -> None:
+        try:
+            row = self.db.execute("SELECT value FROM meta WHERE key = 'schema_version'").fetchone()
+        except sqlite3.DatabaseError as error:
+            raise ProjectError(f"{self.db_path}: not a readable project database ({error})") from None
+        if row is None or int(row["value"]) != SCHEMA_VERSION:
+            found = row["value"] if row else "none"
+            raise ProjectError(
+                f"{self.db_path}: project schema version {found}, this coindie reads {SCHEMA_VERSION}"
+            )
+
+    def meta(self, key: str, default: str | None = None) -> str | None:
+        row = self.db.execute("SELECT value FROM meta WHERE key = ?", (key,)).fetchone()
+        return row["value"] if row else default
+
+    def set_meta(self, key: str, value: str) -> None:
+        with self.transaction() as db:
+            db.execute("INSERT OR REPLACE INTO meta VALUES (?, ?)", (key, value))
+
+    # ------------------------------------------------------------------------------------------- scans
+
+    def scan_dirs(self) -> list[Path]:
+        return [Path(p) for p in json.loads(self.meta("scan_dirs", "[]") or "[]")]
+
+    def add_scans(self, scans_dir: str | Path) -> AddReport:
+        """List ``scans_dir`` (files are not read here) and record new or changed faces. A face whose file
+        changed (size or modification time) is prepared again and loses its pairs."""
+        from coindie.io import open_dataset
+        from coindie.io.reader import face_id_of
+
+        scans_dir = Path(scans_dir).resolve()
+        dataset = open_dataset(scans_dir)
+        dirs = [str(p) for p in self.scan_dirs()]
+        if str(scans_dir) not in dirs:
+            self.set_meta("scan_dirs", json.dumps([*dirs, str(scans_dir)]))
+        report = AddReport(skipped=[str(failure) for failure in dataset.duplicates])
+        known = {row["face_id"]: row for row in self.db.execute("SELECT * FROM scans")}
+        stamp = now()
+        with self.transaction() as db:
+            for path in dataset.paths:
+                face_id = face_id_of(path)
+                size, mtime = _stat(path)
+                row = known.get(face_id.key)
+                if row is None:
+                    db.execute(
+                        "INSERT INTO scans (face_id, name, side, path, size_bytes, mtime_ns, added_at) "
+                        "VALUES (?, ?, ?, ?, ?, ?, ?)",
+                        (face_id.key, face_id.name, side_of(face_id), str(path), size, mtime, stamp),
+                    )
+                    report.added.append(face_id.key)
+                elif (row["path"], row["size_bytes"], row["mtime_ns"]) != (str(path), size, mtime):
+                    db.execute(
+                        "UPDATE scans SET path = ?, size_bytes = ?, mtime_ns = ?, status = 'new', "
+                        "content_hash = NULL, error = NULL WHERE face_id = ?",
+                        (str(path), size, mtime, face_id.key),
+                    )
+                    db.execute("DELETE FROM pairs WHERE source = ? OR target = ?", (face_id.key,) * 2)
+                    report.changed.append(face_id.key)
+                else:
+                    report.unchanged += 1
+        return report
+
+    def refresh(self) -> AddReport:
+        """Add the new and changed scans of every folder added so far."""
+        total = AddReport()
+        for folder in self.scan_dirs():
+            if not folder.is_dir():
+                continue
+            report = self.add_scans(folder)
+            total.added += report.added
+            total.changed += report.changed
+            total.unchanged += report.unchanged
+            total.skipped += report.skipped
+        return total
+
+    def scans(self, status: str | None = None) -> list[ScanRow]:
+        query = "SELECT * FROM scans" + (" WHERE status = ?" if status else "") + " ORDER BY face_id"
+        rows = self.db.execute(query, (status,) if status else ())
+        return [
+            ScanRow(
+                r["face_id"],
+                r["name"],
+                r["side"],
+                r["path"],
+                r["content_hash"],
+                r["status"],
+                r["error"],
+                r["n_points"],
+            )  # fmt: skip
+            for r in rows
+        ]
+
+    def cached_file(self, content_hash: str, params_hash: str) -> Path | None:
+        row = self.db.execute(
+            "SELECT file FROM scan_cache WHERE content_hash = ? AND params_hash = ?",
+            (content_hash, params_hash),
+        ).fetchone()
+        return self.cache_dir / row["file"] if row and (self.cache_dir / row["file"]).is_file() else None
+
+    # ------------------------------------------------------------------------------------------ labels
+
+    def set_labels(self, labels: Mapping[str, str], source: str) -> None:
+        with self.transaction() as db:
+            db.execute("DELETE FROM labels")
+            db.executemany(
+                "INSERT INTO labels VALUES (?, ?, ?)",
+                [(parse_face_id(k).key, str(v), source) for k, v in labels.items()],
+            )
+
+    def labels(self) -> dict[str, str]:
+        """Face id -> die, as given at init (empty when none were)."""
+        return {r["face_id"]: r["die"] for r in self.db.execute("SELECT face_id, die FROM labels")}
+
+    # ------------------------------------------------------------------------------------------- edits
+
+    def add_edit(
+        self, author: str, action: str, a: str | None = None, b: str | None = None, **payload: Any
+    ) -> int:
+        """Append one expert edit to the log (never updated nor deleted); its id."""
+        with self.transaction() as db:
+            cursor = db.execute(
+                "INSERT INTO edits (at, author, action, a, b, payload) VALUES (?, ?, ?, ?, ?, ?)",
+                (now(), author, action, a, b, json.dumps(payload, sort_keys=True)),
+            )
+        return int(cursor.lastrowid or 0)
+
+    def edits(self) -> list[dict[str, Any]]:
+        rows = self.db.execute("SELECT * FROM edits ORDER BY edit_id")
+        return [{**dict(r), "payload": json.loads(r["payload"])} for r in rows]
+
+    # ------------------------------------------------------------------------------------------- pairs
+
+    def current_params(self) -> str | None:
+        """The parameter set of the latest run (the pairs ``probability_graph`` reads by default)."""
+        row = self.db.execute(
+            "SELECT params_hash FROM runs WHERE params_hash IS NOT NULL ORDER BY run_id DESC LIMIT 1"
+        ).fetchone()
+        return row["params_hash"] if row else None
+
+    def scored_pairs(self, params_hash: str | None = None, side: str | None = None) -> list[dict[str, Any]]:
+        """The done pairs of a parameter set (the latest run's by default), as dictionaries with the
+        transform and histogram decoded; sorted by (source, target)."""
+        params_hash = params_hash or self.current_params()
+        if params_hash is None:
+            return []
+        query = "SELECT * FROM pairs WHERE params_hash = ? AND status = 'done'"
+        args: tuple[str, ...] = (params_hash,)
+        if side is not None:
+            query, args = query + " AND side = ?", (*args, side)
+        return [decode_pair(r) for r in self.db.execute(query + " ORDER BY source, target", args)]
+
+    def probability_graph(self, side: str | None = None, params_hash: str | None = None) -> ProbabilityGraph:
+        """The project's scored pairs as a :class:`coindie.clustering.ProbabilityGraph`: every usable face
+        of ``side`` (``D`` or ``R``; both when None, with no link across sides) and an edge per done pair
+        weighted by its same-die probability."""
+        from coindie.clustering import ProbabilityGraph
+
+        faces = [s.face_id for s in self.scans("ok") if side is None or s.side == side]
+        known = set(faces)
+        edges = [
+            (p["source"], p["target"], float(p["probability"] or 0.0))
+            for p in self.scored_pairs(params_hash, side)
+            if p["source"] in known and p["target"] in known
+        ]
+        return ProbabilityGraph.from_edges(edges, faces, where=str(self.folder))
+
+
+def decode_pair(row: sqlite3.Row) -> dict[str, Any]:
+    """A pairs row with its JSON and blob columns decoded."""
+    pair = dict(row)
+    if pair.get("T_target_source"):
+        pair["T_target_source"] = np.asarray(json.loads(pair["T_target_source"]), dtype=np.float64)
+    if pair.get("histogram") is not None:
+        pair["histogram"] = np.frombuffer(pair["histogram"], dtype=np.float32).astype(np.float64)
+    if pair.get("timings"):
+        pair["timings"] = json.loads(pair["timings"])
+    return pair
+
+
+def _stat(path: Path) -> tuple[int, int]:
+    try:
+        info = path.stat()
+    except OSError:  # a broken link: listed, and prepared into an error with its message
+        return 0, 0
+    return int(info.st_size), int(info.st_mtime_ns)
+
+
+def elapsed_since(stamp: str) -> float:
+    """Seconds since an ISO time stamp written by :func:`now`."""
+    return time.time() - datetime.fromisoformat(stamp).timestamp()

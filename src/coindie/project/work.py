@@ -1,0 +1,246 @@
+"""What workers run: the per-face work (once per face) and the scoring of a batch of pairs.
+
+Both are pure functions of their task (file paths and parameters, all picklable) and of files in the
+project's cache: they never touch the database, so they run the same in a local process or on a Dask
+worker, and the results depend on neither. The scheduler (:mod:`coindie.project.run`) commits what they
+return.
+
+Per face (``prepare_face``): the scan file's content hash, the cloud grid-sampled at the finest grid the
+pair function needs (the histogram's target grid, 0.05 mm in the paper's text), and the candidate-search
+descriptor; saved as one ``.npz`` (float32) named by content hash and parameters.
+
+Per pair (``score_batch``): :func:`coindie.similarity.score_pair` on two cached faces, with the registrar
+fed the faces grid-sampled at the paper's 0.1 mm. A worker keeps recently loaded faces (and the
+registration's and histogram's per-face work, cached by content in those modules) across the pairs of a
+batch: batches are tiles of the pair matrix, so each face is loaded once per batch, not once per pair.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import time
+import traceback
+import weakref
+from collections import OrderedDict
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from coindie.errors import CoinDieError
+from coindie.scan import Scan
+
+#: Version of the pair function's own code (bump when a change alters results: the pairs are redone).
+PAIR_FUNCTION_VERSION = 1
+#: Version of the per-face work (bump when a change alters the cache: faces are prepared again).
+FACE_WORK_VERSION = 1
+
+
+@dataclass(frozen=True)
+class FaceTask:
+    face_id: str
+    path: str
+    cache_dir: str
+    params_hash: str
+    grid_mm: float
+    registration_grid_mm: float
+
+
+@dataclass(frozen=True)
+class PairBatch:
+    """Pairs to score, ``(source, target)`` face ids; ``files`` maps each face to its cached ``.npz``."""
+
+    pairs: tuple[tuple[str, str], ...]
+    files: tuple[tuple[str, str], ...]
+    config: str  # JSON: method, method_params, registration_grid_mm, classifier (dict)
+    cache_faces: int
+
+
+def face_params_hash(grid_mm: float, registration_grid_mm: float) -> str:
+    """The key of the per-face cache: what the per-face work depends on."""
+    from coindie.candidates import DescriptorSettings
+
+    text = json.dumps(
+        {
+            "version": FACE_WORK_VERSION,
+            "grid_mm": grid_mm,
+            "registration_grid_mm": registration_grid_mm,
+            "descriptor": DescriptorSettings().digest(),
+        },
+        sort_keys=True,
+    )
+    return hashlib.sha256(text.encode()).hexdigest()[:16]
+
+
+def file_hash(path: str | Path) -> str:
+    """SHA-256 of a file's bytes (the key of its cached work: a renamed file keeps its cache)."""
+    digest = hashlib.sha256()
+    with open(path, "rb") as handle:
+        for block in iter(lambda: handle.read(1 << 20), b""):
+            digest.update(block)
+    return digest.hexdigest()
+
+
+def prepare_face(task: FaceTask) -> dict[str, Any]:
+    """Hash, read, grid-sample and describe one face; write its cache file. A bad scan returns its
+    error (one line) instead of raising: a batch never dies because of one file."""
+    start = time.perf_counter()
+    try:
+        return _prepare(task, start)
+    except CoinDieError as error:
+        return {"face_id": task.face_id, "error": str(error)}
+    except Exception as error:  # an unforeseen failure of one file is recorded, not raised
+        return {"face_id": task.face_id, "error": f"{task.path}: unexpected {type(error).__name__}: {error}"}
+
+
+def _prepare(task: FaceTask, start: float) -> dict[str, Any]:
+    from coindie.candidates.descriptor import face_descriptor
+    from coindie.io import read_scan
+    from coindie.preprocess import grid_sample
+    from coindie.registration.geometry import MIN_POINTS, with_normals
+
+    content_hash = file_hash(task.path)
+    scan = read_scan(task.path)
+    fine = grid_sample(with_normals(scan), task.grid_mm)
+    if fine.n_points < MIN_POINTS:
+        raise CoinDieError(f"{task.path}: {fine.n_points} points after grid sampling, too few to register")
+    assert fine.normals is not None
+    points, normals = fine.points.astype(np.float32), fine.normals.astype(np.float32)
+    stored = Scan(points=points.astype(np.float64), normals=normals.astype(np.float64), id=task.face_id)
+    descriptor = face_descriptor(grid_sample(stored, task.registration_grid_mm))
+    name = f"{content_hash[:2]}/{content_hash}-{task.params_hash}.npz"
+    target = Path(task.cache_dir) / name
+    target.parent.mkdir(parents=True, exist_ok=True)
+    partial = target.with_name(f".{target.stem}.{os.getpid()}.tmp.npz")
+    np.savez(partial, points=points, normals=normals, descriptor=descriptor)
+    os.replace(partial, target)  # atomic: a killed worker leaves no half-written cache file
+    return {
+        "face_id": task.face_id,
+        "content_hash": content_hash,
+        "file": name,
+        "n_points": int(fine.n_points),
+        "descriptor": descriptor.tobytes(),
+        "seconds": time.perf_counter() - start,
+    }
+
+
+def load_descriptor(path: str | Path) -> np.ndarray:
+    with np.load(path) as data:
+        return np.asarray(data["descriptor"], dtype=np.float32)
+
+
+# ------------------------------------------------------------------------------------------------- pairs
+
+
+class SampledRegistrar:
+    """A registrar that registers the faces grid-sampled at ``grid_mm`` (the paper registers 0.1 mm
+    clouds) while the histogram reads the finer clouds it is given. The transform is the same frame either
+    way: grid sampling moves no point. Coarse versions are kept per face object."""
+
+    def __init__(self, inner: Any, grid_mm: float) -> None:
+        self.inner = inner
+        self.name = inner.name
+        self.grid_mm = grid_mm
+        self._coarse: weakref.WeakKeyDictionary[Scan, Scan] = weakref.WeakKeyDictionary()
+
+    def register(self, source: Scan, target: Scan) -> Any:
+        return self.inner.register(self.coarse(source), self.coarse(target))
+
+    def coarse(self, scan: Scan) -> Scan:
+        from coindie.preprocess import grid_sample
+
+        if scan not in self._coarse:
+            self._coarse[scan] = grid_sample(scan, self.grid_mm)
+        return self._coarse[scan]
+
+
+class _Worker:
+    """Per-process state: the scorer of one configuration and the faces loaded last."""
+
+    def __init__(self) -> None:
+        self.config_text = ""
+        self.faces: OrderedDict[str, Scan] = OrderedDict()
+        self.registrar: SampledRegistrar | None = None
+        self.classifier: Any = None
+
+    def configure(self, config_text: str, cache_faces: int) -> None:
+        if config_text == self.config_text:
+            return
+        from coindie.registration import base as registration_base
+        from coindie.registration import get_method
+        from coindie.similarity import SameDieClassifier
+        from coindie.similarity import histogram as similarity_histogram
+
+        config = json.loads(config_text)
+        self.registrar = SampledRegistrar(
+            get_method(config["method"], **config["method_params"]), config["registration_grid_mm"]
+        )
+        self.classifier = SameDieClassifier.from_dict(config["classifier"], "the run's classifier")
+        # The registration and histogram modules keep a few faces' work (search trees, relief images,
+        # sampled clouds) keyed by content; a batch touches up to ``cache_faces`` faces, which must all
+        # stay cached for each to be prepared once per batch. Their cache sizes are read at call time.
+        registration_base.CLOUD_CACHE_SIZE = max(registration_base.CLOUD_CACHE_SIZE, cache_faces + 2)
+        similarity_histogram.FACE_CACHE_SIZE = max(similarity_histogram.FACE_CACHE_SIZE, 2 * cache_faces + 4)
+        self.config_text = config_text
+        self.cache_faces = cache_faces
+
+    def face(self, face_id: str, path: str) -> Scan:
+        if face_id in self.faces:
+            self.faces.move_to_end(face_id)
+            return self.faces[face_id]
+        with np.load(path) as data:
+            points, normals = data["points"].astype(np.float64), data["normals"].astype(np.float64)
+        scan = Scan(points=points, normals=normals, id=face_id)
+        self.faces[face_id] = scan
+        while len(self.faces) > self.cache_faces:
+            self.faces.popitem(last=False)
+        return scan
+
+
+_WORKER = _Worker()
+
+
+def score_batch(batch: PairBatch) -> list[dict[str, Any]]:
+    """Score every pair of the batch; a pair that fails returns its reason instead of raising."""
+    from coindie.similarity import score_pair
+
+    _WORKER.configure(batch.config, batch.cache_faces)
+    files = dict(batch.files)
+    rows = []
+    for source_id, target_id in batch.pairs:
+        try:
+            source = _WORKER.face(source_id, files[source_id])
+            target = _WORKER.face(target_id, files[target_id])
+            score = score_pair(
+                source, target, _WORKER.registrar, _WORKER.classifier.settings, _WORKER.classifier
+            )
+            rows.append(
+                {
+                    "source": source_id,
+                    "target": target_id,
+                    "status": "done",
+                    "method": score.method,
+                    "valid": bool(score.valid),
+                    "reason": score.reason,
+                    "probability": float(score.probability),
+                    "residual": float(score.residual) if np.isfinite(score.residual) else None,
+                    "T_target_source": json.dumps(np.asarray(score.T_target_source).tolist()),
+                    "histogram": np.asarray(score.histogram, dtype=np.float32).tobytes(),
+                    "timings": json.dumps(score.timings),
+                }
+            )
+        except Exception as error:  # one bad pair is recorded with its reason; the batch goes on
+            last = traceback.extract_tb(error.__traceback__)[-1] if error.__traceback__ else None
+            where = f" ({Path(last.filename).name}:{last.lineno})" if last else ""
+            rows.append(
+                {
+                    "source": source_id,
+                    "target": target_id,
+                    "status": "failed",
+                    "reason": f"{type(error).__name__}: {error}{where}",
+                }
+            )
+    return rows
