@@ -1,0 +1,101 @@
+"""``coindie cluster`` and ``coindie eval``: die clusters from a probability graph, and their quality."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from coindie.cli.app import app, exits_cleanly
+from coindie.errors import ParameterError
+
+
+@app.command("cluster")
+@exits_cleanly
+def cluster_command(
+    source: Annotated[
+        Path,
+        typer.Argument(
+            metavar="PAIRS_OR_GRAPH",
+            help="A pairs CSV (source,target,probability), a node-link graph.json, or a die-study project.",
+        ),
+    ],
+    out: Annotated[Path, typer.Option("-o", "--out", help="Cluster CSV to write (the paper's name, die).")],
+    threshold: Annotated[
+        float | None, typer.Option(help="Links with a probability above it count (paper: 0.95).")
+    ] = None,
+    auto: Annotated[
+        bool, typer.Option("--auto", help="Choose the threshold without labels (best silhouette on 1 - p).")
+    ] = False,
+    method: Annotated[str, typer.Option(help="components (the paper's), average or leiden.")] = "components",
+    as_json: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
+) -> None:
+    """Cluster faces into dies: threshold the same-die probabilities, then group."""
+    from coindie.clustering import PAPER_THRESHOLD, cluster, select_threshold_unsupervised, write_clusters
+
+    if threshold is not None and auto:
+        raise ParameterError("give --threshold or --auto, not both")
+    graph = _graph(source)
+    if auto:
+        choice = select_threshold_unsupervised(graph, method)
+        tau, how = choice.threshold, f"chosen by silhouette {choice.score:.3f}"
+    else:
+        tau = PAPER_THRESHOLD if threshold is None else threshold
+        how = "given" if threshold is not None else "the paper's"
+    clusters = cluster(graph, method, tau)
+    write_clusters(clusters, out)
+    sizes = [len(c) for c in clusters.clusters()]
+    if as_json:
+        report = {"out": str(out), "method": method, "threshold": tau, "threshold_from": how,
+                  "n_faces": graph.n_nodes, "n_clusters": clusters.n_clusters, "sizes": sizes}  # fmt: skip
+        typer.echo(json.dumps(report))
+        return
+    typer.echo(
+        f"{out}: {graph.n_nodes} faces in {clusters.n_clusters} clusters ({method}, threshold {tau:g}, "
+        f"{how}); largest {', '.join(map(str, sizes[:8]))}"
+    )
+
+
+def _graph(source: Path):  # noqa: ANN202
+    from coindie.clustering import read_graph
+
+    if source.is_dir():
+        from coindie.project import open_project  # a die-study project (coindie init / run)
+
+        return open_project(source).probability_graph()
+    return read_graph(source)
+
+
+@app.command("eval")
+@exits_cleanly
+def eval_command(
+    clusters: Annotated[Path, typer.Argument(help="Cluster CSV (name, die) to judge.")],
+    labels: Annotated[Path, typer.Argument(help="True dies: labels.csv (coin_id,die_id) or name, die.")],
+    as_json: Annotated[bool, typer.Option("--json", help="Print the scores as JSON.")] = False,
+    mistakes: Annotated[bool, typer.Option(help="List the dies split and the clusters merged.")] = False,
+) -> None:
+    """FMI, ARI (as the paper), AMI, pairwise precision/recall, clusters vs dies, and the mistakes."""
+    from coindie.clustering import evaluate, read_clusters
+
+    predicted, truth = read_clusters(clusters), read_clusters(labels)
+    result = evaluate(predicted, truth)
+    if as_json:
+        report = result.to_dict() if mistakes else result.scores()
+        typer.echo(json.dumps(report))
+        return
+    s = result.scores()
+    typer.echo(
+        f"FMI {s['fmi']:.4f}  ARI {s['ari']:.4f}  AMI {s['ami']:.4f}  precision {s['precision']:.4f}  "
+        f"recall {s['recall']:.4f}  clusters {s['n_clusters']} for {s['n_dies']} dies ({s['n_faces']} faces)"
+    )
+    if result.missing:
+        typer.echo(
+            f"{len(result.missing)} labelled faces are not in the clustering: "
+            f"{', '.join(result.missing[:10])}"
+        )
+    if mistakes:
+        for m in result.mistakes:
+            parts = "; ".join(f"{k}: {' '.join(v)}" for k, v in m.members.items())
+            typer.echo(f"{m.kind} {m.name}: {parts}")
