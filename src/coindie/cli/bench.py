@@ -19,7 +19,13 @@ app.add_typer(bench, name="bench")
 def registration(
     data: Annotated[Path, typer.Argument(help="Hoard folder: scans, labels.csv, splits.csv, truth.json.")],
     out: Annotated[Path, typer.Option("--out", help="Folder for pairs.csv, per_die.csv, summary.*")],
-    methods: Annotated[str, typer.Option(help="Comma-separated method names (coindie methods).")] = "relief",
+    methods: Annotated[
+        str,
+        typer.Option(
+            help="Comma-separated method names (coindie methods), each optionally with parameters: "
+            "fcgf+icp[matcher.n_points=250]."
+        ),
+    ] = "relief",
     max_pairs: Annotated[int | None, typer.Option(help="At most this many pairs (dies take turns).")] = None,
     workers: Annotated[int, typer.Option(help="Worker processes.")] = 1,
     seed: Annotated[int, typer.Option(help="Seed of the random rotations.")] = 0,
@@ -32,14 +38,16 @@ def registration(
     from rich.console import Console
     from rich.markdown import Markdown
 
-    from coindie.bench.registration import benchmark_registration
+    from coindie.bench.registration import benchmark_registration, parse_method
     from coindie.cli.progress import counting_progress
-    from coindie.registration import list_methods
+    from coindie.registration import list_methods, method_info
 
     names = [m.strip() for m in methods.split(",") if m.strip()]
-    unknown = [m for m in names if m not in list_methods()]
-    if unknown or not names:
-        raise ParameterError(f"unknown method(s) {unknown or methods!r}; known: {', '.join(list_methods())}")
+    if not names:
+        raise ParameterError(f"no method in {methods!r}; known: {', '.join(list_methods())}")
+    for name in names:  # methods and the parameters in their labels are checked before any pair runs
+        method, params = parse_method(name)
+        method_info(method).build(params)
     if workers < 1:
         raise ParameterError(f"--workers must be at least 1. Got {workers}.")
     with counting_progress("pairs") as progress:
@@ -49,3 +57,47 @@ def registration(
         )  # fmt: skip
     Console().print(Markdown((out / "summary.md").read_text().split("\n\nThe paper's")[0]))
     typer.echo(f"{sum(int(e['n_pairs']) for e in summary.values())} results in {out}")
+
+
+@bench.command("clustering")
+@exits_cleanly
+def clustering(
+    data: Annotated[Path, typer.Argument(help="Hoard folder: scans, labels.csv, splits.csv.")],
+    out: Annotated[Path, typer.Option("--out", help="Folder for pairs.csv, graphs, clusters, summary.*")],
+    method: Annotated[str, typer.Option(help="Registration method (coindie methods).")] = "relief",
+    model: Annotated[
+        Path | None, typer.Option(help="Same-die classifier JSON; default: train one on cluster_train.")
+    ] = None,
+    max_faces: Annotated[
+        int | None, typer.Option(help="At most this many faces per group and split (whole-die samples).")
+    ] = None,
+    train_pairs: Annotated[int, typer.Option(help="Training pairs when training the classifier.")] = 2000,
+    train_faces: Annotated[int, typer.Option(help="Faces the training pairs are drawn among.")] = 200,
+    groups: Annotated[str, typer.Option(help="Comma-separated groups: R, DB, D.")] = "R,DB,D",
+    clustering_methods: Annotated[
+        str, typer.Option("--clustering", help="Comma-separated: components, average, leiden.")
+    ] = "components,average,leiden",
+    workers: Annotated[int, typer.Option(help="Worker processes.")] = 1,
+    seed: Annotated[int, typer.Option(help="Seed of the face and pair samples.")] = 0,
+) -> None:
+    """The paper's clustering benchmark (Table 3): FMI/ARI and clusters per group, τ by validation."""
+    from rich.console import Console
+    from rich.markdown import Markdown
+
+    from coindie.bench.clustering import BenchOptions, benchmark_clustering
+    from coindie.cli.progress import counting_progress
+    from coindie.registration import list_methods
+
+    if method not in list_methods():
+        raise ParameterError(f"unknown method {method!r}; known: {', '.join(list_methods())}")
+    if workers < 1:
+        raise ParameterError(f"--workers must be at least 1. Got {workers}.")
+    options = BenchOptions(
+        method=method, model=model, max_faces=max_faces, train_pairs=train_pairs, train_faces=train_faces,
+        methods=tuple(m.strip() for m in clustering_methods.split(",") if m.strip()),
+        groups=tuple(g.strip().upper() for g in groups.split(",") if g.strip()), workers=workers, seed=seed,
+    )  # fmt: skip
+    with counting_progress("pairs") as progress:
+        benchmark_clustering(data, out, options, progress=progress)
+    Console().print(Markdown((out / "summary.md").read_text().split("\n\nThe paper's")[0]))
+    typer.echo(f"results in {out}")
