@@ -152,6 +152,9 @@ def run_project(
         message = str(error)
         raise
     finally:
+        restarts = getattr(backend, "restarts", 0)
+        if restarts:
+            echo(f"worker processes died and were replaced {restarts} time(s); their batches were run again")
         backend.close()
         report.seconds = time.perf_counter() - start
         _end_run(project, run_id, status, message)

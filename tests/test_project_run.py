@@ -1,0 +1,214 @@
+"""Runs of a die-study project on a tiny synthetic hoard: resumable after a killed worker or a killed run,
+identical on local processes and on a Dask LocalCluster, bad scans recorded, new scans add only their pairs.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import psutil
+import pytest
+
+from coindie.project import init_project, open_project
+from coindie.project.run import RunConfig, run_project, tile_batches
+
+SHARED_SCALER = Path("/work/shared/data/riedones3d/histogram_scaler.json")
+#: What a result is, apart from its timings: every stored figure of a pair.
+RESULT_FIELDS = ("source", "target", "side", "origin", "status", "method", "valid", "reason", "probability")
+
+
+@pytest.fixture(scope="module")
+def hoard(tmp_path_factory) -> Path:
+    from coindie.synth.hoard import PhysicsParams, synthesize
+    from coindie.synth.scanner import ScanParams
+
+    out = tmp_path_factory.mktemp("hoard")
+    # A 0.1 mm scanner keeps the faces small and the runs short.
+    synthesize(out, preset="tiny", seed=5, physics=PhysicsParams(scan=ScanParams(spacing_mm=0.1)), workers=2)
+    for path in out.glob("L000[78]?.ply"):  # 12 faces, 30 pairs: enough batches to kill one mid-run
+        path.unlink()
+    return out
+
+
+@pytest.fixture(scope="module")
+def classifier(tmp_path_factory) -> str:
+    """The shipped model when there is one; otherwise one fitted on the paper's real mean histogram
+    (same die: near it; different dies: the same mass pushed to larger distances)."""
+    from coindie.similarity import SameDieClassifier
+
+    path = tmp_path_factory.mktemp("model") / "classifier.json"
+    try:
+        SameDieClassifier.load_default().save(path)
+        return str(path)
+    except (OSError, ValueError):
+        pass
+    import json
+
+    mean = np.asarray(json.loads(SHARED_SCALER.read_text())["mean"], dtype=np.float64)
+    rng = np.random.default_rng(0)
+    same = mean * rng.uniform(0.8, 1.2, size=(60, mean.size))
+    other = np.roll(mean, 12) * rng.uniform(0.8, 1.2, size=(60, mean.size))
+    model = SameDieClassifier.from_paper_scaler(SHARED_SCALER).fit(
+        np.vstack([same, other]), np.r_[np.ones(60, bool), np.zeros(60, bool)]
+    )
+    model.save(path)
+    return str(path)
+
+
+@pytest.fixture(scope="module")
+def reference(hoard, classifier, tmp_path_factory) -> list[dict]:
+    """An uninterrupted run on local processes: the pairs every other run must reproduce."""
+    folder = tmp_path_factory.mktemp("reference")
+    project, _ = init_project(folder, hoard, hoard / "labels.csv")
+    run_project(project, RunConfig(workers=2, mode="exhaustive", classifier=classifier), echo=lambda _: None)
+    return _results(folder)
+
+
+def _results(folder: Path) -> list[dict]:
+    return open_project(folder).scored_pairs()
+
+
+def assert_same_pairs(found: list[dict], expected: list[dict]) -> None:
+    assert [(p["source"], p["target"]) for p in found] == [(p["source"], p["target"]) for p in expected]
+    for a, b in zip(found, expected, strict=True):
+        assert {k: a[k] for k in RESULT_FIELDS} == {k: b[k] for k in RESULT_FIELDS}
+        np.testing.assert_array_equal(a["T_target_source"], b["T_target_source"])
+        np.testing.assert_array_equal(a["histogram"], b["histogram"])
+
+
+def test_reference_scores_every_same_side_pair_once(reference, hoard) -> None:
+    faces = sorted(p.stem for p in hoard.glob("*.ply"))
+    per_side = {side: [f for f in faces if f.endswith(side)] for side in "DR"}
+    expected = sum(len(v) * (len(v) - 1) // 2 for v in per_side.values())
+    assert len(reference) == expected
+    assert all(p["source"][-1] == p["target"][-1] == p["side"] for p in reference)  # no cross-side pair
+    assert len({(p["source"], p["target"]) for p in reference}) == expected
+    # the faces were registered: same-die pairs of the tiny hoard align (their truth is known)
+    labels = _labels(hoard)
+    same = [p for p in reference if labels[p["source"]] == labels[p["target"]]]
+    assert same and np.mean([p["valid"] for p in same]) >= 0.8
+
+
+def _labels(hoard: Path) -> dict[str, str]:
+    from coindie.io.labels import read_labels
+
+    return {str(k): v for k, v in read_labels(hoard / "labels.csv").items()}
+
+
+def _start_run(folder: Path, classifier: str) -> subprocess.Popen:
+    coindie = Path(sys.executable).parent / "coindie"
+    command = [str(coindie), "run", str(folder), "--workers", "2", "--exhaustive"]
+    command += ["--classifier", classifier, "--batch-faces", "2"]
+    return subprocess.Popen(
+        command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, start_new_session=True, text=True
+    )
+
+
+def _done(folder: Path) -> int:
+    import sqlite3
+
+    try:
+        with sqlite3.connect(folder / "project.sqlite", timeout=30) as db:
+            return db.execute("SELECT COUNT(*) FROM pairs WHERE status = 'done'").fetchone()[0]
+    except sqlite3.OperationalError:  # tables not made yet
+        return 0
+
+
+def _wait_for(condition, timeout: float = 120.0) -> None:
+    deadline = time.monotonic() + timeout
+    while not condition():
+        assert time.monotonic() < deadline, "timed out"
+        time.sleep(0.2)
+
+
+def test_a_killed_worker_is_replaced_and_nothing_is_lost(hoard, classifier, reference, tmp_path) -> None:
+    init_project(tmp_path, hoard)
+    run = _start_run(tmp_path, classifier)
+    _wait_for(lambda: _done(tmp_path) >= 4)
+    children = psutil.Process(run.pid).children(recursive=True)
+    workers = [p for p in children if "spawn_main" in " ".join(p.cmdline())]  # not the resource tracker
+    assert workers, "no worker process to kill"
+    os.kill(workers[0].pid, signal.SIGKILL)  # mid-run: the batches it held are run again
+    output, _ = run.communicate(timeout=300)
+    assert run.returncode == 0, output
+    assert "died and were replaced 1 time(s)" in output
+    assert_same_pairs(_results(tmp_path), reference)
+
+
+def test_kill_9_of_the_run_then_resume_repeats_no_committed_pair(
+    hoard, classifier, reference, tmp_path
+) -> None:
+    init_project(tmp_path, hoard)
+    run = _start_run(tmp_path, classifier)
+    _wait_for(lambda: _done(tmp_path) >= 6)
+    os.killpg(run.pid, signal.SIGKILL)  # the run and its workers, at once, mid-batch
+    run.wait()
+    before = {(p["source"], p["target"]): (p["run_id"], p["done_at"]) for p in _results(tmp_path)}
+    assert 0 < len(before) < len(reference)
+    # rerun (in this process: also covers the killed run's stale 'running' row)
+    project = open_project(tmp_path)
+    report = run_project(project, RunConfig(workers=2, mode="exhaustive", classifier=classifier), echo=print)
+    assert report.pairs_done == len(reference) - len(before)
+    after = _results(tmp_path)
+    assert_same_pairs(after, reference)
+    kept = {(p["source"], p["target"]): (p["run_id"], p["done_at"]) for p in after}
+    assert all(kept[key] == value for key, value in before.items())  # committed pairs were not redone
+    runs = [r["status"] for r in project.db.execute("SELECT status FROM runs ORDER BY run_id")]
+    assert runs == ["killed", "finished"]
+
+
+def test_dask_local_cluster_gives_the_same_pairs(hoard, classifier, reference, tmp_path) -> None:
+    pytest.importorskip("dask.distributed")
+    project, _ = init_project(tmp_path, hoard)
+    config = RunConfig(workers=2, dask="local", mode="exhaustive", classifier=classifier, batch_faces=3)
+    report = run_project(project, config, echo=lambda _: None)
+    assert "LocalCluster of 2" in report.backend
+    assert_same_pairs(_results(tmp_path), reference)
+
+
+def test_a_bad_scan_is_recorded_and_new_scans_only_add_their_pairs(
+    hoard, classifier, reference, tmp_path
+) -> None:
+    from coindie.project.status import project_status
+
+    scans = tmp_path / "scans"
+    scans.mkdir()
+    later = {"L0003D.ply", "L0006R.ply"}
+    for path in hoard.glob("*.ply"):
+        if path.name not in later:
+            shutil.copy(path, scans / path.name)
+    (scans / "L0099D.ply").write_bytes(
+        b"ply\nformat binary_little_endian 1.0\nelement vertex 10\nend_header\n"
+    )
+    project, _ = init_project(tmp_path / "project", scans)
+    config = RunConfig(workers=2, mode="exhaustive", classifier=classifier)
+    first = run_project(project, config, echo=lambda _: None)
+    bad = [s for s in project.scans() if s.status == "error"]
+    assert [s.face_id for s in bad] == ["L0099D"]
+    assert "L0099D.ply" in bad[0].error and len(first.faces_failed) == 1
+    assert "bad scan: L0099D" in project_status(project).text()
+    for name in later:
+        shutil.copy(hoard / name, scans / name)
+    second = run_project(project, config, echo=lambda _: None)
+    assert second.faces_prepared == 2  # the bad scan is not tried again while its file is unchanged
+    assert second.pairs_done == len(reference) - first.pairs_done
+    new = [p for p in _results(tmp_path / "project") if p["run_id"] == second.run_id]
+    assert new and all({p["source"], p["target"]} & {"L0003D", "L0006R"} for p in new)
+    assert_same_pairs(_results(tmp_path / "project"), reference)
+
+
+def test_tiles_cover_every_pair_once_and_bound_the_faces_per_batch() -> None:
+    faces = [f"L{i:04d}D" for i in range(40)]
+    rng = np.random.default_rng(1)
+    pairs = sorted({tuple(sorted(rng.choice(faces, 2, replace=False))) for _ in range(300)})
+    batches = tile_batches(pairs, batch_faces=4)
+    flat = [pair for batch in batches for pair in batch]
+    assert sorted(flat) == pairs
+    assert all(len({f for pair in batch for f in pair}) <= 8 for batch in batches)
