@@ -117,3 +117,22 @@ def test_cli_runs_the_benchmark_and_rejects_unknown_methods(hoard, tmp_path) -> 
                                  "--methods", "relief,nope"])  # fmt: skip
     assert result.exit_code == 2
     assert "nope" in result.output
+
+
+def test_a_method_label_may_carry_checked_parameters() -> None:
+    from coindie.bench.registration import parse_method
+    from coindie.errors import ParameterError
+
+    assert parse_method("relief") == ("relief", {})
+    assert parse_method("fcgf+icp[matcher.n_points=250; teaser.noise_bound=0.3]") == (
+        "fcgf+icp",
+        {"matcher.n_points": 250, "teaser.noise_bound": 0.3},
+    )
+    for bad, message in [
+        ("nope[x=1]", "Unknown registration method"),
+        ("fcgf[matcher.n_points=two]", "n_points"),
+        ("fcgf[matcher.n_points=250", r"name\[key=value"),
+        ("fcgf[n_points]", "not key=value"),
+    ]:
+        with pytest.raises(ParameterError, match=message):
+            parse_method(bad)

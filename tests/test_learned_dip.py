@@ -7,8 +7,9 @@ import pytest
 import torch
 from scipy.spatial.transform import Rotation
 
-from coindie.errors import CoinDieError
-from coindie.learned.dip import DIPConfig, DIPDescriptor, DIPNet, embed, load_model, save_model
+from coindie.errors import CoinDieError, ParameterError
+from coindie.learned.dip import DIPConfig, DIPDescriptor, load_model, save_model
+from coindie.learned.dip_network import DIPNet, embed
 from coindie.learned.lrf import canonical_patches, local_frames, patch_indices, patches, to_local
 from coindie.registration.geometry import Cloud, transform_points
 from coindie.registration.testing import make_coin_pair, rigid_transform
@@ -183,3 +184,48 @@ def test_inference_folds_batch_norm_without_changing_the_network(network: DIPNet
             x = torch.relu(layer.norm(layer.linear(x))) if hasattr(layer, "norm") else layer(x)
         expected = torch.nn.functional.normalize(x, dim=1)
         torch.testing.assert_close(network(patch), expected, atol=1e-5, rtol=1e-5)
+
+
+# ------------------------------------------------------------------------------------------ training
+
+TRAINABLE = DIPConfig(radius=1.5, n_points=64, voxel=0.2, widths=(16, 32), head=(32,), dim=16)
+
+
+def test_training_steps_lower_the_loss_of_a_pair_of_faces(training_hoard) -> None:
+    from coindie.learned.learners import DIPLearner
+    from coindie.learned.pairs import VALIDATION, PairSet
+    from coindie.learned.train import TrainOptions
+
+    pair = PairSet(training_hoard, voxel=TRAINABLE.voxel).make(0, [0, 1, 0], VALIDATION)
+    options = TrainOptions(model=TRAINABLE, patches=128)
+    learner = DIPLearner()
+    model = learner.new(TRAINABLE, seed=0)
+    optimizer = torch.optim.SGD(model.parameters(), lr=0.1, momentum=0.8)
+
+    def loss() -> torch.Tensor:  # the same patches every step: an overfit problem
+        return learner.losses(model, [pair], options, torch.Generator().manual_seed(5))["loss"]
+
+    model.train()
+    first = float(loss())
+    for _ in range(25):
+        optimizer.zero_grad()
+        value = loss()
+        value.backward()
+        optimizer.step()
+    assert float(loss()) < 0.7 * first
+
+
+def test_a_training_run_writes_a_model_that_the_descriptor_loads(training_hoard, tmp_path) -> None:
+    from coindie.learned.train import DIP_MODEL, TrainOptions, train_dip
+
+    options = TrainOptions(model=TRAINABLE, epochs=2, max_pairs=1, fmr_points=300, patches=64)
+    log = train_dip(training_hoard, tmp_path / "run", options)
+    assert [r["epoch"] for r in log] == [1, 2] and 0 <= log[-1]["val"]["fmr"] <= 1
+    weights = tmp_path / "run" / DIP_MODEL
+    dip = DIPDescriptor(weights=str(weights))
+    assert dip.network.config == TRAINABLE
+    coin = Cloud.of(make_coin_pair(seed=2, radius=3.0).target)
+    support = dip.support(coin)
+    assert dip.describe(support, np.arange(10)).shape == (10, TRAINABLE.dim)
+    with pytest.raises(ParameterError, match="DIPConfig"):
+        train_dip(training_hoard, tmp_path / "other", TrainOptions(epochs=1))

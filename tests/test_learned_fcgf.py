@@ -51,20 +51,8 @@ def surface() -> np.ndarray:
 
 
 @pytest.fixture(scope="module")
-def hoard(tmp_path_factory):
-    from coindie.synth.design import DieParams
-    from coindie.synth.hoard import PhysicsParams, synthesize
-    from coindie.synth.scanner import ScanParams
-    from coindie.synth.strike import StrikeParams
-
-    out = tmp_path_factory.mktemp("fcgf_hoard")
-    physics = PhysicsParams(
-        die=DieParams(pitch_mm=0.05),
-        strike=StrikeParams(bend_probability=0.0, double_probability=0.0),
-        scan=ScanParams(spacing_mm=0.1),
-    )
-    synthesize(out, preset="tiny", seed=3, physics=physics, workers=1)
-    return out
+def hoard(training_hoard):
+    return training_hoard
 
 
 def test_descriptors_are_unit_vectors_one_per_point_shared_within_a_voxel(surface) -> None:

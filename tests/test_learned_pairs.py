@@ -14,6 +14,7 @@ from coindie.learned.pairs import (
     VALIDATION,
     Augmentation,
     PairSet,
+    crop,
     face_pairs,
     match_points,
     split_pairs,
@@ -24,20 +25,8 @@ VOXEL = 0.2
 
 
 @pytest.fixture(scope="module")
-def hoard(tmp_path_factory) -> Path:
-    from coindie.synth.design import DieParams
-    from coindie.synth.hoard import PhysicsParams, synthesize
-    from coindie.synth.scanner import ScanParams
-    from coindie.synth.strike import StrikeParams
-
-    out = tmp_path_factory.mktemp("pairs_hoard")
-    physics = PhysicsParams(
-        die=DieParams(pitch_mm=0.05),
-        strike=StrikeParams(bend_probability=0.0, double_probability=0.0),
-        scan=ScanParams(spacing_mm=0.1),
-    )
-    synthesize(out, preset="tiny", seed=3, physics=physics, workers=1)
-    return out
+def hoard(training_hoard):
+    return training_hoard
 
 
 @pytest.fixture(scope="module")
@@ -137,3 +126,32 @@ def test_a_single_die_lends_some_of_its_pairs_and_a_single_pair_serves_both() ->
 def test_a_split_without_pairs_is_refused(hoard) -> None:
     with pytest.raises(TruthError, match="cluster_val"):
         PairSet(hoard, "cluster_val")  # one face per die there
+
+
+def test_normals_turn_with_the_augmentation_and_stay_unit(pairs) -> None:
+    pair = pairs.make(0, [0, 4, 0], TRAINING)
+    a = pairs.pairs[0][0]
+    assert np.allclose(np.linalg.norm(pair.source_normals, axis=1), 1.0)
+    # Turned back by the augmentation's rotation (recovered from the points), they are the face's own.
+    A = _augmentation_of(pairs.cloud(a), pair.source)
+    back = pair.source_normals @ A
+    assert np.allclose(back, pairs.normals(a), atol=1e-9)
+
+
+def _augmentation_of(original: np.ndarray, moved: np.ndarray) -> np.ndarray:
+    """The rotation R (3 x 3) of a similarity moved = s R original + t, from the point sets."""
+    a, b = original - original.mean(0), moved - moved.mean(0)
+    u, _, vt = np.linalg.svd(b.T @ a)
+    return u @ np.diag([1, 1, np.linalg.det(u @ vt)]) @ vt
+
+
+def test_a_cropped_pair_keeps_true_matches_inside_the_balls(pairs) -> None:
+    pair = pairs.make(0, [0, 5, 1], TRAINING)
+    cut = crop(pair, 3.0, np.random.default_rng(2))
+    assert 0 < len(cut.source) < len(pair.source) and 0 < len(cut.target) < len(pair.target)
+    assert len(cut.source_normals) == len(cut.source) and len(cut.target_normals) == len(cut.target)
+    assert len(cut.matches) > 0.3 * min(len(cut.source), len(cut.target))
+    moved = transform_points(cut.T_target_source, cut.source[cut.matches[:, 0]])
+    scale = np.cbrt(abs(np.linalg.det(cut.T_target_source[:3, :3])))
+    assert np.median(np.linalg.norm(moved - cut.target[cut.matches[:, 1]], axis=1)) < VOXEL * scale
+    assert np.ptp(cut.source, axis=0)[:2].max() <= 6.0 + 1e-9

@@ -28,6 +28,7 @@ import numpy as np
 from scipy.spatial.transform import Rotation
 
 from coindie.bench.truth import HoardTruth, load_truth
+from coindie.errors import ParameterError
 from coindie.scan import Scan
 
 #: The paper's benchmark: grid 0.1 mm, random rotations x, y in ±25°, z in ±180°.
@@ -139,7 +140,30 @@ def _grid_scan(path: str) -> Scan:
 def _registrar(method: str, params: tuple[tuple[str, object], ...]):  # noqa: ANN202
     from coindie.registration import get_method
 
-    return get_method(method, **dict(params))
+    name, in_label = parse_method(method)
+    return get_method(name, **(in_label | dict(params)))
+
+
+def parse_method(label: str) -> tuple[str, dict[str, object]]:
+    """``"fcgf+icp[matcher.n_points=250]"`` -> ``("fcgf+icp", {"matcher.n_points": 250})``: a method
+    with parameters written into its label, so that one run can compare variants of one method (the
+    paper's FCGF (250) and FCGF (5000)). Values are parsed and checked by the method's parameters."""
+    from coindie.registration import method_info
+
+    name, _, rest = label.strip().partition("[")
+    info = method_info(name.strip())
+    if not rest:
+        return info.name, {}
+    if not rest.endswith("]"):
+        raise ParameterError(f"Method {label!r}: parameters are written name[key=value;key=value].")
+    params = {}
+    for item in filter(None, (part.strip() for part in rest[:-1].split(";"))):
+        key, equals, value = item.partition("=")
+        if not equals or not key.strip():
+            raise ParameterError(f"Method {label!r}: {item!r} is not key=value.")
+        full_key, parsed = info.parse(key.strip(), value.strip())
+        params[full_key] = parsed
+    return info.name, params
 
 
 def benchmark_registration(

@@ -1,9 +1,9 @@
 """DIP descriptors (Poiesi & Boscaini 2021): a PointNet on patches expressed in their local reference frame.
 
-``DIPNet`` maps a batch of canonical patches, a (B, n_points, 3) float tensor of patch points in their
-local frame divided by the patch radius (:func:`coindie.learned.lrf.canonical_patches`), to (B, dim)
-unit-norm descriptors: a shared per-point MLP, max pooling over the points, an MLP head. Rotation
-invariance comes from the frame, not from the network.
+The network (:class:`~coindie.learned.dip_network.DIPNet`) maps a batch of canonical patches (points in
+their local reference frame, :func:`coindie.learned.lrf.canonical_patches`) to unit descriptors; rotation
+invariance comes from the frame, not from the network. torch is imported only when a network is built or
+loaded, so that registering the methods costs nothing.
 
 ``DIPDescriptor`` is the registration-side :class:`~coindie.registration.features.FeatureExtractor`. Its
 weights are a safetensors state dict plus a JSON :class:`DIPConfig` next to it (never pickled objects);
@@ -15,20 +15,19 @@ from __future__ import annotations
 import json
 from dataclasses import asdict, dataclass, field, fields
 from functools import cached_property
-from itertools import pairwise
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-import torch
-from torch import nn
-from torch.nn import functional
 
 from coindie.errors import CoinDieError
 from coindie.learned.lrf import canonical_patches
 from coindie.registration.geometry import Cloud, FloatArray, IntArray
 from coindie.registration.params import Configurable, param
 from coindie.scan import Scan
+
+if TYPE_CHECKING:
+    from coindie.learned.dip_network import DIPNet
 
 #: The packaged weights (absent until a model is trained and shipped).
 PACKAGED_WEIGHTS = Path(__file__).parent / "weights" / "dip.safetensors"
@@ -68,59 +67,6 @@ class DIPConfig:
             raise CoinDieError(f"{source}: not a DIP configuration: {error}") from None
 
 
-class DIPNet(nn.Module):
-    """PointNet: (B, n_points, 3) canonical patches -> (B, dim) unit-norm descriptors."""
-
-    def __init__(self, config: DIPConfig | None = None) -> None:
-        super().__init__()
-        self.config = config or DIPConfig()
-        widths = (3, *self.config.widths)
-        self.points = nn.Sequential(*[_Dense(a, b) for a, b in pairwise(widths)])
-        sizes = (widths[-1], *self.config.head)
-        self.head = nn.Sequential(
-            *[_Dense(a, b) for a, b in pairwise(sizes)], nn.Linear(sizes[-1], self.config.dim)
-        )
-
-    def forward(self, patches: torch.Tensor) -> torch.Tensor:
-        pooled = self.points(patches).max(dim=1).values  # per-point features (B, n, C) -> (B, C)
-        return functional.normalize(self.head(pooled), dim=1)
-
-
-class _Dense(nn.Module):
-    """Linear -> batch norm -> ReLU on the last axis of (..., C) inputs (channels last: 2x faster than a
-    1x1 Conv1d on CPU). In eval mode the norm is folded into the linear map: the per-point layers are
-    memory-bound, and a separate normalisation pass over (B, n, C) costs as much as the product."""
-
-    def __init__(self, inputs: int, outputs: int) -> None:
-        super().__init__()
-        self.linear = nn.Linear(inputs, outputs)
-        self.norm = nn.BatchNorm1d(outputs)
-
-    def forward(self, x: torch.Tensor) -> torch.Tensor:
-        if self.training:
-            flat = self.norm(self.linear(x.reshape(-1, x.shape[-1])))
-            return functional.relu(flat.reshape(*x.shape[:-1], -1))
-        scale = self.norm.weight * torch.rsqrt(self.norm.running_var + self.norm.eps)
-        weight = self.linear.weight * scale[:, None]
-        bias = (self.linear.bias - self.norm.running_mean) * scale + self.norm.bias
-        return functional.relu_(functional.linear(x, weight, bias))
-
-
-def embed(model: DIPNet, patches: FloatArray, batch: int = 1024) -> FloatArray:
-    """(M, dim) descriptors of (M, n, 3) canonical patches, in inference mode (the model's mode is kept)."""
-    was_training = model.training
-    model.eval()
-    try:
-        with torch.inference_mode():
-            parts = [
-                model(torch.as_tensor(patches[start : start + batch], dtype=torch.float32)).double().numpy()
-                for start in range(0, len(patches), batch)
-            ]
-    finally:
-        model.train(was_training)
-    return np.concatenate(parts) if parts else np.zeros((0, model.config.dim))
-
-
 def save_model(path: str | Path, model: DIPNet, config: DIPConfig | None = None) -> Path:
     """Write ``path`` (.safetensors, the state dict) and the same name .json (the config); returns the
     weights' path."""
@@ -146,6 +92,8 @@ def load_model(path: str | Path) -> DIPNet:
             raise CoinDieError(
                 f"{required}: no such file; DIP weights need {weights.name} and {description.name}"
             )
+    from coindie.learned.dip_network import DIPNet
+
     model = DIPNet(DIPConfig.from_json(description.read_text(), description))
     try:
         model.load_state_dict(load_file(str(weights)))
@@ -198,6 +146,8 @@ class DIPDescriptor(Configurable):
         return Cloud(sampled.points, sampled.normals)
 
     def describe(self, support: Cloud, at: IntArray) -> FloatArray:
+        from coindie.learned.dip_network import embed
+
         model, rng = self.network, np.random.default_rng(self.seed)
         config: DIPConfig = model.config
         parts = []

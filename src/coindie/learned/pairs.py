@@ -60,6 +60,8 @@ class TrainingPair:
     target: FloatArray
     matches: IntArray
     T_target_source: FloatArray  # 4x4 similarity: augmented source frame -> augmented target frame
+    source_normals: FloatArray  # unit normals of the augmented clouds (DIP's frames use them)
+    target_normals: FloatArray
 
 
 def face_pairs(truth: HoardTruth, split: str) -> list[FacePair]:
@@ -131,7 +133,7 @@ class PairSet:
         self.pairs = list(face_pairs(self.truth, split) if pairs is None else pairs)
         if not self.pairs:
             raise TruthError(f"{self.truth.root}: split {split!r} has no two faces of one die to pair")
-        self._clouds: dict[str, FloatArray] = {}
+        self._clouds: dict[str, tuple[FloatArray, FloatArray]] = {}
 
     def __len__(self) -> int:
         return len(self.pairs)
@@ -148,11 +150,20 @@ class PairSet:
 
     def cloud(self, face_id: str) -> FloatArray:
         """The face's points grid-sampled at ``voxel`` (kept in memory)."""
+        return self._sampled(face_id)[0]
+
+    def normals(self, face_id: str) -> FloatArray:
+        """The unit normals of :meth:`cloud`'s points."""
+        return self._sampled(face_id)[1]
+
+    def _sampled(self, face_id: str) -> tuple[FloatArray, FloatArray]:
         if face_id not in self._clouds:
             from coindie.io import read_scan
             from coindie.preprocess.sampling import grid_sample
 
-            self._clouds[face_id] = grid_sample(read_scan(self.truth.faces[face_id].path), self.voxel).points
+            sampled = grid_sample(read_scan(self.truth.faces[face_id].path), self.voxel)
+            assert sampled.normals is not None
+            self._clouds[face_id] = (sampled.points, sampled.normals)
         return self._clouds[face_id]
 
     def make(
@@ -171,4 +182,39 @@ class PairSet:
             transform_points(A_target, target),
             matches,
             A_target @ T @ np.linalg.inv(A_source),
+            _turned(A_source, self.normals(a)),
+            _turned(A_target, self.normals(b)),
         )
+
+
+def _turned(A: FloatArray, normals: FloatArray) -> FloatArray:
+    """Normals under the similarity ``A``: its rotation (a uniform scale does not turn them)."""
+    turned = normals @ A[:3, :3].T
+    return turned / np.linalg.norm(turned, axis=1, keepdims=True)
+
+
+def crop(pair: TrainingPair, radius: float, rng: np.random.Generator) -> TrainingPair:
+    """The pair cut to the discs of ``radius`` mm (in the coin's plane and out of it: balls) around a
+    random matched place: a source point and its true image in the target.
+
+    FCGF is fully convolutional, so it can learn on parts of the faces (as it learns on fragments of
+    scenes): a 6 mm crop has a quarter of a coin's voxels, so a step costs a quarter as much, and the
+    descriptors, whose receptive field is ~5 mm, see the same kind of neighbourhoods."""
+    centre = pair.source[pair.matches[rng.integers(len(pair.matches)), 0]]
+    keep_source = np.flatnonzero(np.linalg.norm(pair.source - centre, axis=1) <= radius)
+    image = transform_points(pair.T_target_source, centre[None, :])[0]
+    keep_target = np.flatnonzero(np.linalg.norm(pair.target - image, axis=1) <= radius)
+    new_source = np.full(len(pair.source), -1)
+    new_source[keep_source] = np.arange(len(keep_source))
+    new_target = np.full(len(pair.target), -1)
+    new_target[keep_target] = np.arange(len(keep_target))
+    matches = np.column_stack([new_source[pair.matches[:, 0]], new_target[pair.matches[:, 1]]])
+    return TrainingPair(
+        pair.name,
+        pair.source[keep_source],
+        pair.target[keep_target],
+        matches[(matches >= 0).all(axis=1)],
+        pair.T_target_source,
+        pair.source_normals[keep_source],
+        pair.target_normals[keep_target],
+    )

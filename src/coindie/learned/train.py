@@ -1,14 +1,16 @@
-"""Training FCGF on a hoard's registration training split, as the paper did (section 4.1).
+"""Training FCGF (or DIP) on a hoard's registration training split, as the paper did (section 4.1).
 
 ``train_fcgf(hoard, out, TrainOptions(epochs=380))`` runs SGD (lr 0.1, momentum 0.8, weight decay 1e-4,
 lr x 0.99 after each epoch) on the contrastive loss with hardest negatives, one augmented pair of faces of
-one die at a time. After each epoch it measures, on held-out pairs (whole dies, turned like the benchmark
-turns them, never scaled), the loss and the feature-match recall, and writes into ``out``:
+one die at a time. ``TrainOptions(model=DIPConfig())`` trains DIP the same way, on patches around the
+true matches (:mod:`coindie.learned.learners`). After each epoch it measures, on held-out pairs (whole
+dies, turned like the benchmark turns them, never scaled), the loss and the feature-match recall, and
+writes into ``out``:
 
 - ``checkpoint.safetensors`` + ``checkpoint.json``: weights, optimizer state and epoch (``resume=True``
   continues from there, to the same result as an uninterrupted run);
-- ``fcgf.safetensors`` + ``fcgf.json``: the model of the best epoch (highest FMR, then lowest validation
-  loss; the last epoch without validation pairs), ready for ``fcgf.weights=...``;
+- ``fcgf.safetensors`` + ``fcgf.json`` (``dip.*`` for DIP): the model of the best epoch (highest FMR,
+  then lowest validation loss; the last epoch without validation pairs), ready for ``fcgf.weights=...``;
 - ``log.json`` (one record per epoch) and ``curves.png`` (losses, FMR and inlier ratio per epoch).
 
 Feature-match recall (Deng et al. 2018, as FCGF reports it): descriptors of up to ``fmr_points`` random
@@ -30,21 +32,17 @@ import numpy as np
 import torch
 
 from coindie.errors import ParameterError
-from coindie.learned.fcgf import (
-    FCGFConfig,
-    config_path,
-    count_parameters,
-    new_model,
-    save_model,
-    torch_threads,
-)
+from coindie.learned.dip import DIPConfig
+from coindie.learned.fcgf import FCGFConfig, config_path, count_parameters, torch_threads
+from coindie.learned.learners import Learner, ModelConfig, learner_for
 from coindie.learned.losses import ContrastiveLoss
-from coindie.learned.pairs import TRAINING, VALIDATION, PairSet, TrainingPair, split_pairs
+from coindie.learned.pairs import TRAINING, VALIDATION, PairSet, TrainingPair, crop, split_pairs
 from coindie.registration.features import MutualNN
 from coindie.registration.geometry import transform_points
 
 CHECKPOINT = "checkpoint.safetensors"
 MODEL = "fcgf.safetensors"
+DIP_MODEL = "dip.safetensors"
 LOG = "log.json"
 CURVES = "curves.png"
 #: Seeds of validation pairs are offset so that they never equal a training draw.
@@ -74,18 +72,23 @@ class TrainOptions:
     fmr_radius: float = 0.3  # mm
     fmr_ratio: float = 0.05
     fmr_points: int = 5000
-    model: FCGFConfig = field(default_factory=FCGFConfig)
+    patches: int = 256  # DIP: true matches (patch pairs) per training pair
+    crop_radius: float = 0.0  # mm: train on balls of this radius around a random true match (0: whole faces)
+    model: ModelConfig = field(default_factory=FCGFConfig)
     loss: ContrastiveLoss = field(default_factory=ContrastiveLoss)
 
     def __post_init__(self) -> None:
-        positive = ("epochs", "lr", "batch_pairs", "max_val_pairs", "fmr_radius", "fmr_points")
+        positive = ("epochs", "lr", "batch_pairs", "max_val_pairs", "fmr_radius", "fmr_points", "patches")
         for name in positive:
             if not getattr(self, name) > 0:
                 raise ParameterError(
                     f"The {name!r} training option must be > 0. Got {getattr(self, name)!r}."
                 )
-        if self.threads < 0 or self.max_pairs < 0:
-            raise ParameterError(f"threads and max_pairs must be >= 0. Got {self.threads}, {self.max_pairs}.")
+        if self.threads < 0 or self.max_pairs < 0 or self.crop_radius < 0:
+            raise ParameterError(
+                "threads, max_pairs and crop_radius must be >= 0. "
+                f"Got {self.threads}, {self.max_pairs}, {self.crop_radius}."
+            )
         if not (0 <= self.momentum < 1 and 0 < self.lr_decay <= 1 and 0 <= self.val_fraction < 1):
             raise ParameterError(
                 "Training options need 0 <= momentum < 1, 0 < lr_decay <= 1, 0 <= val_fraction < 1."
@@ -95,8 +98,33 @@ class TrainOptions:
         if self.device not in ("cpu", "cuda"):
             raise ParameterError(f"The device must be 'cpu' or 'cuda'. Got {self.device!r}.")
 
+    @property
+    def learner(self) -> Learner:
+        return learner_for(self.model)
+
+    @property
+    def model_file(self) -> str:
+        return f"{self.learner.kind}.safetensors"
+
     def to_json(self) -> dict[str, Any]:
-        return asdict(self) | {"model": self.model.to_json()}
+        return asdict(self) | {"model": _config_json(self.model), "kind": self.learner.kind}
+
+
+def _config_json(config: ModelConfig) -> dict[str, Any]:
+    return json.loads(json.dumps(asdict(config)))
+
+
+def train_dip(
+    data: str | Path,
+    out: str | Path,
+    options: TrainOptions | None = None,
+    **kwargs: Any,
+) -> list[dict[str, Any]]:
+    """:func:`train_fcgf` for DIP: ``options.model`` must be a :class:`DIPConfig` (the default here)."""
+    options = options or TrainOptions(model=DIPConfig())
+    if not isinstance(options.model, DIPConfig):
+        raise ParameterError(f"train_dip needs a DIPConfig model. Got {type(options.model).__name__}.")
+    return train_fcgf(data, out, options, **kwargs)
 
 
 def train_fcgf(
@@ -126,7 +154,7 @@ def _train(
     pairs = PairSet(data, options.split, voxel=options.model.voxel)
     train_pairs, val_pairs = split_pairs(pairs.pairs, pairs.truth, options.val_fraction, options.seed)
     train_set, val_set = pairs.subset(train_pairs), pairs.subset(_at_most(val_pairs, options))
-    model = new_model(options.model, options.seed).to(options.device)
+    model = options.learner.new(options.model, options.seed).to(options.device)
     optimizer = torch.optim.SGD(
         model.parameters(), lr=options.lr, momentum=options.momentum, weight_decay=options.weight_decay
     )
@@ -181,12 +209,11 @@ def _train_epoch(
     start = time.perf_counter()
     for step, first in enumerate(range(0, len(order), options.batch_pairs)):
         batch = [
-            train_set.make(int(i), [options.seed, epoch, int(i)], TRAINING)
-            for i in order[first:][: options.batch_pairs]
+            _training_pair(train_set, int(i), options, epoch) for i in order[first:][: options.batch_pairs]
         ]
         generator = torch.Generator().manual_seed(options.seed * 1_000_003 + epoch * 10_007 + step)
         optimizer.zero_grad(set_to_none=True)
-        losses = _batch_losses(model, batch, options, generator)
+        losses = options.learner.losses(model, batch, options, generator)
         losses["loss"].backward()
         optimizer.step()
         terms.append({k: float(v.detach()) for k, v in losses.items()})
@@ -195,22 +222,12 @@ def _train_epoch(
     return _means(terms) | {"seconds": time.perf_counter() - start, "pairs": len(order)}
 
 
-def _batch_losses(
-    model: torch.nn.Module, batch: list[TrainingPair], options: TrainOptions, generator: torch.Generator
-) -> dict[str, torch.Tensor]:
-    """Mean loss terms of a batch of pairs, all clouds through the network in one pass."""
-    clouds = [c for pair in batch for c in (pair.source, pair.target)]
-    points = torch.as_tensor(np.concatenate(clouds), dtype=torch.float64, device=options.device)
-    index = torch.repeat_interleave(torch.arange(len(clouds)), torch.tensor([len(c) for c in clouds]))
-    features = model.describe_points(points, index.to(options.device)).split([len(c) for c in clouds])
-    per_pair = []
-    for k, pair in enumerate(batch):
-        matches = torch.as_tensor(pair.matches, device=options.device)
-        x_source, x_target = (torch.as_tensor(c, device=options.device) for c in (pair.source, pair.target))
-        per_pair.append(
-            options.loss(features[2 * k], features[2 * k + 1], matches, x_source, x_target, generator)
-        )
-    return {key: torch.stack([terms[key] for terms in per_pair]).mean() for key in per_pair[0]}
+def _training_pair(train_set: PairSet, index: int, options: TrainOptions, epoch: int) -> TrainingPair:
+    """Training pair ``index`` of ``epoch``, augmented, cropped when the options say so."""
+    pair = train_set.make(index, [options.seed, epoch, index], TRAINING)
+    if options.crop_radius:
+        pair = crop(pair, options.crop_radius, np.random.default_rng([options.seed, epoch, index, 1]))
+    return pair
 
 
 def _means(terms: list[dict[str, float]]) -> dict[str, float]:
@@ -231,15 +248,17 @@ def _validate(
     with torch.no_grad():
         for index in range(len(val_set)):
             pair = val_set.make(index, [options.seed, _VALIDATION_SEED, index], VALIDATION)
-            f_source, f_target, spent = _describe_pair(model, pair, options.device)
             generator = torch.Generator().manual_seed(options.seed + index)
-            x = [torch.as_tensor(c, device=options.device) for c in (pair.source, pair.target)]
-            matches = torch.as_tensor(pair.matches, device=options.device)
-            losses.append(float(options.loss(f_source, f_target, matches, *x, generator)["loss"]))
-            ratios.append(
-                inlier_ratio(pair, f_source.cpu().double().numpy(), f_target.cpu().double().numpy(), options)
+            rng = np.random.default_rng([options.seed, len(pair.source), len(pair.target)])
+            at = (
+                _draw(rng, len(pair.source), options.fmr_points),
+                _draw(rng, len(pair.target), options.fmr_points),
             )
-            seconds.append(spent)
+            start = time.perf_counter()
+            terms, f_source, f_target = options.learner.evaluate(model, pair, options, generator, at)
+            seconds.append((time.perf_counter() - start) / 2)
+            losses.append(float(terms["loss"]))
+            ratios.append(inlier_ratio(pair, *at, f_source, f_target, options.fmr_radius))
             if progress:
                 progress(1, 0)
     return {
@@ -252,29 +271,21 @@ def _validate(
     }
 
 
-def _describe_pair(
-    model: torch.nn.Module, pair: TrainingPair, device: str
-) -> tuple[torch.Tensor, torch.Tensor, float]:
-    """Descriptors of both clouds, one pass each; mean seconds per cloud."""
-    start = time.perf_counter()
-    f = [model.describe_points(torch.as_tensor(c, device=device)) for c in (pair.source, pair.target)]
-    if device == "cuda":
-        torch.cuda.synchronize()
-    return f[0], f[1], (time.perf_counter() - start) / 2
-
-
 def inlier_ratio(
-    pair: TrainingPair, f_source: np.ndarray, f_target: np.ndarray, options: TrainOptions
+    pair: TrainingPair,
+    s: np.ndarray,
+    t: np.ndarray,
+    f_source: np.ndarray,
+    f_target: np.ndarray,
+    radius: float,
 ) -> float:
-    """Share of the mutual-nearest-neighbour matches of random points that the truth confirms."""
-    rng = np.random.default_rng([options.seed, len(pair.source), len(pair.target)])
-    s = _draw(rng, len(pair.source), options.fmr_points)
-    t = _draw(rng, len(pair.target), options.fmr_points)
-    matches = MutualNN().match(f_source[s], f_target[t])
+    """Share of the mutual nearest neighbours between the descriptors of source points ``s`` and target
+    points ``t`` whose source point the truth puts within ``radius`` of its target point."""
+    matches = MutualNN().match(f_source, f_target)
     if not len(matches):
         return 0.0
     moved = transform_points(pair.T_target_source, pair.source[s[matches[:, 0]]])
-    return float(np.mean(np.linalg.norm(moved - pair.target[t[matches[:, 1]]], axis=1) < options.fmr_radius))
+    return float(np.mean(np.linalg.norm(moved - pair.target[t[matches[:, 1]]], axis=1) < radius))
 
 
 def _draw(rng: np.random.Generator, n: int, k: int) -> np.ndarray:
@@ -298,9 +309,10 @@ def _start(
             f"{checkpoint}: a training run is already there; resume it or choose another folder"
         )
     header = json.loads(config_path(checkpoint).read_text())
-    if header["options"]["model"] != options.model.to_json():
+    if header["options"]["model"] != _config_json(options.model):
         raise ParameterError(
-            f"{checkpoint}: trained with model {header['options']['model']}, not {options.model.to_json()}"
+            f"{checkpoint}: trained with model {header['options']['model']}, "
+            f"not {_config_json(options.model)}"
         )
     _load_checkpoint(checkpoint, header, model, optimizer, options.device)
     log = json.loads((out / LOG).read_text())
@@ -320,8 +332,10 @@ def _save(
     plot_curves(log, out / CURVES)
     if _best_epoch(log) == log[-1]["epoch"]:
         info = {"epoch": log[-1]["epoch"], "val": _without_lists(log[-1]["val"]), "data": str(data)}
-        save_model(
-            model, out / MODEL, info | {"options": options.to_json(), "parameters": count_parameters(model)}
+        options.learner.save(
+            model,
+            str(out / options.model_file),
+            info | {"options": options.to_json(), "parameters": count_parameters(model)},
         )
     _save_checkpoint(out / CHECKPOINT, model, optimizer, options, log[-1]["epoch"])
 

@@ -43,4 +43,6 @@ for solver in (TeaserSolver, RansacSolver):
     )
 
 # Ours, registered by its own module (it lives beside the planar alignment it builds on).
+# The learned descriptors (FCGF, DIP), registered by their package (torch is imported only when used).
+from coindie.learned import methods as _learned  # noqa: E402, F401
 from coindie.registration import relief as _relief  # noqa: E402, F401
