@@ -17,6 +17,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
+from functools import lru_cache
 from pathlib import Path
 
 import numpy as np
@@ -96,17 +97,25 @@ def _components(graph: ProbabilityGraph, threshold: float) -> IntArray:
 
 
 def _average_linkage(graph: ProbabilityGraph, threshold: float) -> IntArray:
-    from scipy.cluster.hierarchy import fcluster, linkage
-    from scipy.spatial.distance import squareform
+    from scipy.cluster.hierarchy import fcluster
 
     if graph.n_nodes == 1:
         return np.zeros(1, dtype=np.int64)
-    distance = 1.0 - graph.matrix()
-    np.fill_diagonal(distance, 0.0)
-    tree = linkage(squareform(distance, checks=False), method="average")
     # fcluster merges while the cophenetic distance is <= t: a hair below 1 - threshold keeps the strict
     # "probability above the threshold" of the other methods.
-    return fcluster(tree, t=np.nextafter(1.0 - threshold, -np.inf), criterion="distance").astype(np.int64)
+    t = np.nextafter(1.0 - threshold, -np.inf)
+    return fcluster(_average_tree(graph), t=t, criterion="distance").astype(np.int64)
+
+
+@lru_cache(maxsize=4)
+def _average_tree(graph: ProbabilityGraph) -> NDArray[np.float64]:
+    """The average-linkage tree of a graph (kept for a few graphs: choosing τ cuts one tree many times)."""
+    from scipy.cluster.hierarchy import linkage
+    from scipy.spatial.distance import squareform
+
+    distance = 1.0 - graph.matrix()
+    np.fill_diagonal(distance, 0.0)
+    return linkage(squareform(distance, checks=False), method="average")
 
 
 def _leiden(graph: ProbabilityGraph, threshold: float, resolution: float, seed: int) -> IntArray:
