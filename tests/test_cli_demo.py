@@ -1,25 +1,36 @@
-"""`coindie demo` (what `make demo` runs) on a very small hoard: every stage runs on the files it wrote."""
+"""`coindie demo` (what `make demo` runs) on a very small hoard: hoard -> project -> run -> clusters ->
+evaluation, every stage on the files the previous one wrote; a second run recomputes nothing."""
 
 from __future__ import annotations
 
-import json
+import re
 
 from typer.testing import CliRunner
 
 from coindie.cli.app import app
-from coindie.io import read_scan
+from coindie.clustering import read_clusters
+from coindie.io.labels import read_labels
+from coindie.project import open_project
 
 
-def test_demo_generates_loads_renders_and_registers(tmp_path) -> None:
-    result = CliRunner().invoke(app, ["demo", str(tmp_path), "--scale", "0.02", "--workers", "2"])
+def test_demo_runs_the_die_study_end_to_end_and_resumes(tmp_path) -> None:
+    args = ["demo", str(tmp_path), "--scale", "0.01", "--workers", "2", "--candidates", "5"]
+    result = CliRunner().invoke(app, args)
     assert result.exit_code == 0, result.output
     hoard = tmp_path / "hoard"
-    scans = sorted(hoard.glob("*.ply"))
-    assert len(scans) >= 40
-    assert "0 unreadable" in result.output
-    renders = sorted((tmp_path / "renders").glob("*.png"))
-    assert renders and all(read_scan(hoard / f"{png.stem}.ply") for png in renders)
-    summary = json.loads((tmp_path / "registration" / "summary.json").read_text())
-    assert summary["relief"]["n_pairs"] >= 3
-    assert summary["relief"]["success"] == 1.0
-    assert summary["relief"]["All"] < 20.0
+    faces = sorted(path.stem for path in hoard.glob("*.ply"))
+    project = open_project(tmp_path / "project")
+    assert sorted(s.face_id for s in project.scans("ok")) == faces
+    pairs = project.scored_pairs()
+    assert pairs and all(p["source"][-1] == p["target"][-1] for p in pairs)  # same side only
+    assert "candidate search, K = 5" in result.output
+    labels = {str(k): v for k, v in read_labels(hoard / "labels.csv").items()}
+    for side in "DR":
+        clusters = read_clusters(tmp_path / f"clusters_{side}.csv")
+        assert sorted(clusters) == [f for f in faces if f.endswith(side)]
+    fmi = [float(v) for v in re.findall(r"FMI (\d\.\d+)", result.output)]
+    assert len(fmi) == 2 and min(fmi) > 0.5, result.output
+    assert len(labels) == len(faces)
+    again = CliRunner().invoke(app, args)
+    assert again.exit_code == 0, again.output
+    assert "0 faces prepared, 0 pairs scored" in again.output
