@@ -112,3 +112,29 @@ def test_tiles_cover_every_task_once() -> None:
     flat = [t for tile in grouped for t in tile]
     assert sorted(flat, key=str) == sorted(tasks, key=str)
     assert all(len({t.source for t in tile} | {t.target for t in tile}) <= 10 for tile in grouped)
+
+
+def test_train_similarity_command_writes_a_loadable_model(hoard: Path, tmp_path: Path) -> None:
+    from typer.testing import CliRunner
+
+    from coindie.cli.app import app
+
+    out = tmp_path / "model.json"
+    args = [
+        "train",
+        "similarity",
+        str(hoard),
+        "--out",
+        str(out),
+        "--split",
+        "cluster_test",
+        "--max-pairs",
+        "30",
+    ]
+    result = CliRunner().invoke(app, args)
+    assert result.exit_code == 0, result.output
+    model = SameDieClassifier.load(out)
+    assert model.metadata["split"] == "cluster_test" and model.metadata["method"] == "relief"
+    assert (tmp_path / "model.pairs.csv").is_file()
+    bad = CliRunner().invoke(app, [*args[:5], "--method", "nope"])
+    assert bad.exit_code == 2 and "unknown method" in bad.output
