@@ -53,6 +53,9 @@ def run(
     ] = None,
     batch_faces: Annotated[int, typer.Option(help="Faces per side of a batch's tile.")] = 16,
     retry_failed: Annotated[bool, typer.Option(help="Score again the pairs that failed before.")] = False,
+    max_minutes: Annotated[
+        float | None, typer.Option(help="Stop scoring after this long (resume later with coindie run).")
+    ] = None,
     plan_only: Annotated[
         bool, typer.Option(help="Prepare the faces and plan the pairs, score none (see coindie status).")
     ] = False,
@@ -76,6 +79,7 @@ def run(
         classifier=str(classifier) if classifier else None,
         retry_failed=retry_failed,
         plan_only=plan_only,
+        max_seconds=None if max_minutes is None else 60.0 * max_minutes,
     )
     report = run_project(open_project(project), config, progress=counting_progress, echo=typer.echo)
     rate = report.pairs_done / report.stage_seconds["pairs"] if report.stage_seconds.get("pairs") else 0.0
@@ -84,6 +88,8 @@ def run(
         f"({len(report.faces_failed)} bad), {report.pairs_done} pairs scored ({rate:.2f} pairs/s), "
         f"{report.pairs_failed} failed"
     )
+    if report.stopped_early:
+        typer.echo(f"stopped after --max-minutes {max_minutes:g}; `coindie run {project}` goes on from here")
 
 
 @app.command("status")

@@ -72,6 +72,7 @@ class RunConfig:
     registration_grid_mm: float = 0.1
     retry_failed: bool = False
     plan_only: bool = False
+    max_seconds: float | None = None  # stop scoring (cleanly, resumable) after this long
 
     def __post_init__(self) -> None:
         if self.mode not in MODES:
@@ -103,6 +104,7 @@ class RunReport:
     pairs_done: int = 0
     pairs_failed: int = 0
     batches_lost: int = 0
+    stopped_early: bool = False
     seconds: float = 0.0
     stage_seconds: dict[str, float] = field(default_factory=dict)
 
@@ -233,7 +235,7 @@ def _effective(config: RunConfig) -> dict[str, Any]:
 def _check_no_other_run(project: Project) -> None:
     """Two runs writing one project would compute the same pairs twice: refuse while another lives."""
     for row in project.db.execute("SELECT run_id, pid, host FROM runs WHERE status = 'running'"):
-        alive = row["host"] == socket.gethostname() and _pid_alive(row["pid"])
+        alive = row["host"] == socket.gethostname() and pid_alive(row["pid"])
         if alive and row["pid"] != os.getpid():
             raise ProjectError(
                 f"{project.folder}: run {row['run_id']} (process {row['pid']}) is still running"
@@ -242,7 +244,7 @@ def _check_no_other_run(project: Project) -> None:
             db.execute("UPDATE runs SET status = 'killed' WHERE run_id = ?", (row["run_id"],))
 
 
-def _pid_alive(pid: int | None) -> bool:
+def pid_alive(pid: int | None) -> bool:
     if not pid:
         return False
     try:
@@ -422,6 +424,7 @@ def _score_pairs(
         )
         for pairs in tile_batches(todo, config.batch_faces)
     ]
+    started = time.perf_counter()
     with progress("pairs") as update:
         update(0, len(todo))
         for index, result in backend.map_unordered(score_batch, batches):
@@ -439,6 +442,9 @@ def _score_pairs(
             report.pairs_done += done
             report.pairs_failed += len(result) - done
             update(len(result), 0)
+            if config.max_seconds is not None and time.perf_counter() - started > config.max_seconds:
+                report.stopped_early = True
+                break  # the batches in flight are dropped: a rerun scores them
 
 
 def _cache_files(project: Project, config: RunConfig) -> dict[str, str]:

@@ -59,6 +59,8 @@ def project_status(project: Project, max_errors: int = 50) -> ProjectStatus:
         pairs.setdefault(r["side"], {})[r["status"]] = r["n"]
     run = db.execute("SELECT * FROM runs ORDER BY run_id DESC LIMIT 1").fetchone()
     last_run = dict(run) if run else None
+    if last_run and last_run["status"] == "running" and not _still_running(last_run):
+        last_run["status"] = "stopped without closing (killed); coindie run resumes it"
     rate = eta = None
     if run and run["pairs_done"] and run["updated_at"]:
         seconds = elapsed_since(run["started_at"]) - elapsed_since(run["updated_at"])
@@ -78,6 +80,14 @@ def project_status(project: Project, max_errors: int = 50) -> ProjectStatus:
     return ProjectStatus(
         str(project.folder), faces, pairs, last_run, rate, eta, face_errors[:max_errors], pair_errors
     )
+
+
+def _still_running(run: dict[str, Any]) -> bool:
+    import socket
+
+    from coindie.project.run import pid_alive
+
+    return run["host"] != socket.gethostname() or pid_alive(run["pid"])
 
 
 def _duration(seconds: float) -> str:
