@@ -42,15 +42,30 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--workers", type=int, default=2)
     parser.add_argument("--max-minutes", type=float, default=10.0)
     parser.add_argument("--seed", type=int, default=0)
+    parser.add_argument("--runs-json", type=Path, action="append", default=[], help="runs measured before")
+    parser.add_argument(
+        "--cpu-sample", type=Path, help="a prepared project: CPU seconds per face and per pair"
+    )
     args = parser.parse_args(argv)
     args.out.mkdir(parents=True, exist_ok=True)
-    rows = []
-    for n in [int(v) for v in args.faces.split(",")]:
+    rows = [row for path in args.runs_json for row in json.loads(path.read_text())["runs"]]
+    for n in [int(v) for v in args.faces.split(",") if v]:
         subset = _subset(args.hoard, n, args.seed, args.out / "subsets" / str(n))
         for mode in args.modes.split(","):
             rows.append(_measure(subset, args.out / "projects" / f"{mode}-{n}", mode, args))
             (args.out / "throughput.json").write_text(json.dumps(rows, indent=2) + "\n")
     model = _cost_model(rows, args.k)
+    if args.cpu_sample:
+        model["cpu"] = cpu_costs(args.cpu_sample)
+        per_face = model["candidate_pairs_per_face"]
+        for n, p in model["projected"].items():
+            face_cpu = int(n) * model["cpu"]["face_cpu_s"]
+            p["exhaustive_idle_seconds"] = (
+                face_cpu + p["exhaustive_pairs"] * model["cpu"]["pair_cpu_s"]
+            ) / args.workers
+            p["candidate_idle_seconds"] = (
+                face_cpu + per_face * int(n) * model["cpu"]["pair_cpu_s"]
+            ) / args.workers
     machine = _machine(args.workers)
     document = {"machine": machine, "runs": rows, "model": model}
     (args.out / "throughput.json").write_text(json.dumps(document, indent=2) + "\n")
@@ -122,6 +137,42 @@ def _measure(subset: Path, folder: Path, mode: str, args: argparse.Namespace) ->
     return row
 
 
+def cpu_costs(project_dir: Path, n_faces: int = 16, batch_faces: int = 12) -> dict:
+    """CPU seconds (``time.process_time``, independent of how loaded the machine is) of the per-face work
+    on ``n_faces`` faces and of one tile of pairs, both in this process, on a project already prepared."""
+    import tempfile
+
+    from coindie.project import open_project
+    from coindie.project.run import RunConfig, _cache_files, _scorer, tile_batches
+    from coindie.project.work import FaceTask, PairBatch, face_params_hash, prepare_face, score_batch
+
+    project = open_project(project_dir)
+    scans = project.scans("ok")[:n_faces]
+    with tempfile.TemporaryDirectory() as cache:
+        params = face_params_hash(0.05, 0.1)
+        start = time.process_time()
+        for scan in scans:
+            prepare_face(FaceTask(scan.face_id, scan.path, cache, params, 0.05, 0.1))
+        face_cpu = (time.process_time() - start) / len(scans)
+    scorer = _scorer(RunConfig())
+    pairs = [
+        (r["source"], r["target"]) for r in project.db.execute("SELECT source, target FROM pairs LIMIT 20000")
+    ]
+    tile = max(tile_batches(pairs, batch_faces), key=len)
+    files = _cache_files(project, RunConfig())
+    faces = sorted({f for pair in tile for f in pair})
+    batch = PairBatch(tuple(tile), tuple((f, files[f]) for f in faces), scorer.config_text, 2 * batch_faces)
+    results = score_batch(batch)
+    cpu = [json.loads(r["timings"])["cpu"] for r in results if r.get("timings")]
+    return {
+        "face_cpu_s": face_cpu,
+        "pair_cpu_s": float(np.mean(cpu)),
+        "pairs_sampled": len(cpu),
+        "faces_in_tile": len(faces),
+        "faces_sampled": len(scans),
+    }
+
+
 def _cost_model(rows: list[dict], k: int) -> dict:
     """Seconds per face (per-face stage) and per pair (pair stage), pooled over the runs, wall clock."""
     face_rows = [r for r in rows if r["faces_seconds"] > 0]
@@ -178,12 +229,26 @@ def _markdown(rows: list[dict], model: dict, machine: str, args: argparse.Namesp
         "| faces | exhaustive pairs | exhaustive, projected | candidate pairs | candidates, projected |"
     ]
     lines += ["| ---: | ---: | ---: | ---: | ---: |"]
+    idle = "cpu" in model
+    if idle:
+        c = model["cpu"]
+        lines[-3:-3] = [
+            "",
+            f"CPU per face {c['face_cpu_s']:.3f} s ({c['faces_sampled']} faces), "
+            f"per pair {c['pair_cpu_s']:.4f} s "
+            f"({c['pairs_sampled']} pairs of one tile of {c['faces_in_tile']} faces, face loading included); "
+            f"'idle' columns: that CPU time over {args.workers} otherwise idle cores.",
+        ]
+        lines[-2] = lines[-2][:-1] + " exhaustive, idle | candidates, idle |"
+        lines[-1] = lines[-1] + " ---: | ---: |"
     for n, p in model["projected"].items():
-        lines.append(
+        line = (
             f"| {int(n):,} | {p['exhaustive_pairs']:,} | {_duration(p['exhaustive_seconds'])} | "
-            f"{p['candidate_pairs']:,} | "
-            f"{_duration(p['candidate_seconds'])} |"
+            f"{p['candidate_pairs']:,} | {_duration(p['candidate_seconds'])} |"
         )
+        if idle:
+            line += f" {_duration(p['exhaustive_idle_seconds'])} | {_duration(p['candidate_idle_seconds'])} |"
+        lines.append(line)
     return "\n".join(lines) + f"\n\nMachine: {machine}.\n"
 
 
