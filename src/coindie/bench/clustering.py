@@ -13,8 +13,9 @@ training split (or given). The threshold τ is chosen
 
 for each clustering method (``components``, the paper's; ``average``; ``leiden``).
 
-``max_faces`` restricts each group of each split to a sample of faces (dies in random order, at most a
-quarter of the cap from one die), to fit a run into a day on a few cores: the full test sets are ~87k pairs.
+``max_faces`` restricts each group of each split to a sample of faces (dies in random order, at most an
+eighth of the cap from one die, so that a group keeps at least 8 dies when it has them), to fit a run into
+a day on a few cores: the full test sets are ~87k pairs.
 Outputs in ``out``: ``pairs.csv`` (every measured pair, resumable), ``model.json`` (when trained here),
 ``graph_<split>_<group>.json`` (the paper's node-link graphs), ``clusters_<group>.csv`` (the paper's
 ``name, die``, components at the validation τ), ``summary.json``, ``summary.md``, ``fmi_vs_threshold.png``.
@@ -113,8 +114,8 @@ def _needed_groups(groups: tuple[str, ...]) -> list[str]:
 def chosen_faces(
     truth: HoardTruth, split: str, group: str, max_faces: int | None, seed: int = 0
 ) -> list[FaceTruth]:
-    """The faces of ``group`` in ``split``; with ``max_faces``, dies in a seeded random order, at most a
-    quarter of the cap (and at least 2) faces of each die, until the cap."""
+    """The faces of ``group`` in ``split``; with ``max_faces``, dies in a seeded random order, at most an
+    eighth of the cap (and at least 2) faces of each die, until the cap."""
     faces = sorted((f for f in truth.faces_in(split) if f.family == group), key=lambda f: f.face_id)
     if max_faces is None or len(faces) <= max_faces:
         return faces
@@ -122,7 +123,7 @@ def chosen_faces(
     for face in faces:
         by_die.setdefault(face.die, []).append(face)
     rng = np.random.default_rng([seed, len(split), len(group)])
-    per_die, chosen = max(2, max_faces // 4), []
+    per_die, chosen = max(2, max_faces // 8), []
     for die in rng.permutation(sorted(by_die)):
         chosen += by_die[str(die)][: min(per_die, max_faces - len(chosen))]
         if len(chosen) >= max_faces:

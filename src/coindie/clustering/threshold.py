@@ -8,7 +8,7 @@
   silhouette and is never chosen.
 
 Both scan a grid of τ: 0.01 steps, refined near 0 and 1 where calibrated probabilities crowd (down to
-1 - 1e-6), and keep the best (the lowest τ of equal scores, which is the fewest links cut).
+1 - 1e-6), and keep the best; when a range of τ ties for the best, its centre (the widest range, in τ).
 """
 
 from __future__ import annotations
@@ -89,9 +89,22 @@ def select_threshold_unsupervised(
 
 
 def _best(grid: FloatArray, scores: FloatArray, counts: NDArray[np.int64], criterion: str) -> ThresholdChoice:
+    """The centre of the widest run of consecutive grid τ that share the best score: a τ at the edge of
+    the plateau (the lowest or the highest that scores best) is one step from a merge or a split on
+    another set of faces; the centre is the farthest from both."""
     if len(grid) == 0:
         raise ParameterError("no threshold to choose from")
     order = np.argsort(grid, kind="stable")
     grid, scores, counts = grid[order], scores[order], counts[order]
-    best = int(np.argmax(scores))  # the first (lowest τ) of equal maxima
+    top = scores >= np.max(scores) - 1e-12
+    runs, start = [], None
+    for k, is_top in enumerate([*top, False]):
+        if is_top and start is None:
+            start = k
+        elif not is_top and start is not None:
+            runs.append((grid[k - 1] - grid[start], start, k - 1))
+            start = None
+    _, first, last = max(runs, key=lambda r: (r[0], -r[1]))
+    centre = 0.5 * (grid[first] + grid[last])
+    best = first + int(np.argmin(np.abs(grid[first : last + 1] - centre)))
     return ThresholdChoice(float(grid[best]), float(scores[best]), criterion, grid, scores, counts)
