@@ -5,10 +5,11 @@ the source is another, smaller disc of it (partial overlap), on another grid off
 moved by a known rigid transform. Global methods get a large transform (120° about the axis, tilted);
 local methods (``icp``) only refine a start near the truth, so they get a mild one (8° and 0.4 mm).
 
-Tolerances: methods that end with ICP must land within 0.5° and 0.1 mm. Methods that end with a robust
-solver on FPFH matches (``fpfh+teaser``, ``fpfh+ransac``) estimate from matches between points of a 0.2 mm
-support grid, so they get 1° and 0.3 mm. (The relief is bolder than real coins' so that FPFH has a chance:
-the paper reports FPFH + TEASER failing on most real dies.)
+Learned methods (``dip``, ``fcgf``) run with their shipped weights (trained on synthetic coins, not on
+this relief). Tolerances: methods that end with ICP must land within 0.5° and 0.1 mm. Methods that end
+with a robust solver on FPFH matches (``fpfh+teaser``, ``fpfh+ransac``) estimate from matches between
+points of a 0.2 mm support grid, so they get 1° and 0.3 mm. (The relief is bolder than real coins' so
+that FPFH has a chance: the paper reports FPFH + TEASER failing on most real dies.)
 """
 
 from __future__ import annotations
@@ -17,6 +18,8 @@ import numpy as np
 import pytest
 
 from coindie.errors import InvalidScanError
+from coindie.learned.fcgf import SHIPPED_WEIGHTS as SHIPPED_FCGF
+from coindie.learned.fcgf import ModelFileError
 from coindie.registration import (
     RegistrationResult,
     get_method,
@@ -35,7 +38,10 @@ COARSE_TOLERANCE = (1.0, 0.3)
 TOLERANCE = {"fpfh+teaser": COARSE_TOLERANCE, "fpfh+ransac": COARSE_TOLERANCE}
 DEFAULT_TOLERANCE = (0.5, 0.1)
 
-METHODS = list_methods()
+#: Learned methods whose weights are not shipped cannot register: they must say so (see the last test).
+#: FCGF's are not shipped yet: on this project's CPUs its training did not converge (BENCHMARK.md).
+WITHOUT_WEIGHTS = [] if SHIPPED_FCGF.is_file() else [m for m in list_methods() if m.split("+")[0] == "fcgf"]
+METHODS = [m for m in list_methods() if m not in WITHOUT_WEIGHTS]
 
 
 def tolerance(method: str) -> tuple[float, float]:
@@ -165,3 +171,13 @@ def test_a_scan_without_normals_gets_estimated_ones(pairs) -> None:
     result = get_method("icp").register(bare, pair.target)
     assert result.valid, result.reason
     assert_close(pair.T_target_source, result.T_target_source, "icp")
+
+
+@pytest.mark.parametrize("method", WITHOUT_WEIGHTS or ["(every learned method has weights)"])
+def test_a_learned_method_without_weights_says_how_to_get_them(method: str, pairs) -> None:
+    if not WITHOUT_WEIGHTS:
+        pytest.skip("every learned method has shipped weights")
+    pair = pair_for(method, pairs)
+    with pytest.raises(ModelFileError, match="coindie train fcgf") as error:
+        get_method(method).register(pair.source, pair.target)
+    assert str(SHIPPED_FCGF) in str(error.value)

@@ -21,16 +21,19 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from coindie.errors import CoinDieError
+from coindie.learned.cache import DescriptorCache
 from coindie.learned.lrf import canonical_patches
-from coindie.registration.geometry import Cloud, FloatArray, IntArray
+from coindie.registration.geometry import Cloud, FloatArray, IntArray, content_key
 from coindie.registration.params import Configurable, param
 from coindie.scan import Scan
 
 if TYPE_CHECKING:
     from coindie.learned.dip_network import DIPNet
 
-#: The packaged weights (absent until a model is trained and shipped).
+#: The packaged weights (trained by `coindie train dip`, see BENCHMARK.md).
 PACKAGED_WEIGHTS = Path(__file__).parent / "weights" / "dip.safetensors"
+#: Descriptors of the last clouds described, per process (see coindie.learned.cache).
+_descriptor_cache = DescriptorCache(8)
 
 
 @dataclass(frozen=True)
@@ -146,6 +149,12 @@ class DIPDescriptor(Configurable):
         return Cloud(sampled.points, sampled.normals)
 
     def describe(self, support: Cloud, at: IntArray) -> FloatArray:
+        if self.model is not None:  # a network being trained changes: nothing to keep
+            return self._describe(support, at)
+        key = (self.weights, self.seed, content_key(support.points, support.normals, at))
+        return _descriptor_cache.get(key, lambda: self._describe(support, at))
+
+    def _describe(self, support: Cloud, at: IntArray) -> FloatArray:
         from coindie.learned.dip_network import embed
 
         model, rng = self.network, np.random.default_rng(self.seed)

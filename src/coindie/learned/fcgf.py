@@ -18,7 +18,6 @@ Model files are a safetensors state dict with a JSON config beside it: no pickle
 from __future__ import annotations
 
 import json
-from collections import OrderedDict
 from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import asdict, dataclass
@@ -29,6 +28,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from coindie.errors import CoinDieError, ParameterError
+from coindie.learned.cache import DescriptorCache
 from coindie.registration.geometry import Cloud, FloatArray, IntArray, content_key
 from coindie.registration.params import Configurable, param
 from coindie.scan import Scan
@@ -160,7 +160,7 @@ def _cached_model(path: str, device: str) -> torch.nn.Module:
     return load_model(path, device)
 
 
-_descriptor_cache: OrderedDict[tuple[str, str, bytes], FloatArray] = OrderedDict()
+_descriptor_cache = DescriptorCache(_DESCRIPTOR_CACHE_SIZE)
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -203,14 +203,12 @@ class FCGFDescriptor(Configurable):
         return Cloud(sampled.points, sampled.normals)
 
     def describe(self, support: Cloud, at: IntArray) -> FloatArray:
-        key = (str(self.weights_path), self.device, content_key(support.points))
-        if key not in _descriptor_cache:
+        def compute() -> FloatArray:
             with torch_threads(self.threads):
-                _descriptor_cache[key] = describe_cloud(self.model(), support.points, self.device)
-            if len(_descriptor_cache) > _DESCRIPTOR_CACHE_SIZE:
-                _descriptor_cache.popitem(last=False)
-        _descriptor_cache.move_to_end(key)
-        return _descriptor_cache[key][at]
+                return describe_cloud(self.model(), support.points, self.device)
+
+        key = (str(self.weights_path), self.device, content_key(support.points))
+        return _descriptor_cache.get(key, compute)[at]
 
 
 @contextmanager

@@ -11,7 +11,7 @@ from __future__ import annotations
 from typing import Any
 
 from coindie.learned.dip import DIPDescriptor
-from coindie.learned.fcgf import FCGFDescriptor
+from coindie.learned.fcgf import SHIPPED_WEIGHTS, FCGFDescriptor
 from coindie.registration.base import register_method
 from coindie.registration.compose import Refined
 from coindie.registration.features import FeatureRegistration, MutualNN
@@ -29,6 +29,8 @@ def _matching(descriptor: type, parts: dict[str, Any]) -> FeatureRegistration:
 
 
 for _descriptor, _label in _LABELS.items():
+    if _descriptor is FCGFDescriptor and not SHIPPED_WEIGHTS.is_file():
+        _label += "; no shipped weights: train them (coindie train fcgf) and pass fcgf.weights"
     register_method(
         _descriptor.NAME,
         lambda _d=_descriptor, **parts: _matching(_d, parts),

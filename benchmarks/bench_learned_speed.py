@@ -1,0 +1,71 @@
+"""Feature extraction speed of the learned descriptors per coin face, on the CPU (and on CUDA if present).
+
+    .venv/bin/python benchmarks/bench_learned_speed.py HOARD [--faces 10] [--threads 1]
+
+Faces of the registration test split, grid-sampled at 0.1 mm as the benchmark gives them. For each face:
+FCGF's descriptors of every voxel (one pass of the sparse U-Net) and DIP's descriptors of 5000 random
+points (5000 patches through the PointNet), with the shipped weights. Prints the median seconds per face
+and the points per face (no pass/fail).
+"""
+
+from __future__ import annotations
+
+import argparse
+import statistics
+import time
+from pathlib import Path
+
+import numpy as np
+import torch
+from rich.progress import track
+
+from coindie.bench.registration import _grid_scan
+from coindie.bench.truth import load_truth
+from coindie.learned.dip import DIPDescriptor
+from coindie.learned.fcgf import FCGFDescriptor
+from coindie.registration.geometry import Cloud
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("hoard", type=Path)
+    parser.add_argument("--faces", type=int, default=10)
+    parser.add_argument("--threads", type=int, default=1)
+    args = parser.parse_args()
+    torch.set_num_threads(args.threads)
+
+    truth = load_truth(args.hoard)
+    faces = truth.faces_in("registration_test")[: args.faces]
+    clouds = [Cloud.of(_grid_scan(str(f.path))) for f in track(faces, description="reading")]
+    devices = ["cpu"] + (["cuda"] if torch.cuda.is_available() else [])
+    print("| device | descriptor | median s per face | points per face | faces | threads |")
+    print("| --- | --- | ---: | ---: | ---: | ---: |")
+    for device in devices:
+        extractors = {
+            "FCGF (every voxel)": FCGFDescriptor(device=device, threads=args.threads),
+            "DIP (5000 points)": DIPDescriptor(),
+        }
+        if device == "cuda":
+            extractors.pop("DIP (5000 points)")  # DIP runs on the CPU here
+        for label, extractor in extractors.items():
+            seconds, sizes = [], []
+            for cloud in track(clouds, description=f"{label} on {device}"):
+                support = extractor.support(cloud)
+                n = len(support.points)
+                at = (
+                    np.arange(n)
+                    if label.startswith("FCGF")
+                    else np.sort(np.random.default_rng(0).choice(n, min(n, 5000), replace=False))
+                )
+                start = time.perf_counter()
+                extractor.describe(support, at)  # each face is new to the descriptor cache
+                seconds.append(time.perf_counter() - start)
+                sizes.append(len(at))
+            print(
+                f"| {device} | {label} | {statistics.median(seconds):.3f} | {int(statistics.median(sizes))} "
+                f"| {len(clouds)} | {args.threads} |"
+            )
+
+
+if __name__ == "__main__":
+    main()
