@@ -29,17 +29,18 @@ def _matching(descriptor: type, parts: dict[str, Any]) -> FeatureRegistration:
 
 
 for _descriptor, _label in _LABELS.items():
+    _note = ""
     if _descriptor is FCGFDescriptor and not SHIPPED_WEIGHTS.is_file():
-        _label += "; no shipped weights: train them (coindie train fcgf) and pass fcgf.weights"
+        _note = " (no shipped weights: train them with coindie train fcgf, pass fcgf.weights)"
     register_method(
         _descriptor.NAME,
         lambda _d=_descriptor, **parts: _matching(_d, parts),
         parts=(_descriptor, MutualNN, TeaserSolver),
-        summary=f"{_label} descriptors, mutual nearest neighbours, TEASER",
+        summary=f"{_label} descriptors, mutual nearest neighbours, TEASER{_note}",
     )
     register_method(
         f"{_descriptor.NAME}+icp",
         lambda _d=_descriptor, **parts: Refined(_matching(_d, parts), parts[PatchICP.NAME]),
         parts=(_descriptor, MutualNN, TeaserSolver, PatchICP),
-        summary=f"{_label} + TEASER, refined by the paper's patch ICP",
+        summary=f"{_label} + TEASER, refined by the paper's patch ICP{_note}",
     )
