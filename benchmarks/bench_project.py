@@ -226,7 +226,8 @@ def _markdown(rows: list[dict], model: dict, machine: str, args: argparse.Namesp
         "",
     ]
     lines += [
-        "| faces | exhaustive pairs | exhaustive, projected | candidate pairs | candidates, projected |"
+        "| faces | exhaustive pairs | exhaustive, at the measured rate | candidate pairs "
+        "| candidates, at the measured rate |"
     ]
     lines += ["| ---: | ---: | ---: | ---: | ---: |"]
     idle = "cpu" in model
@@ -237,9 +238,9 @@ def _markdown(rows: list[dict], model: dict, machine: str, args: argparse.Namesp
             f"CPU per face {c['face_cpu_s']:.3f} s ({c['faces_sampled']} faces), "
             f"per pair {c['pair_cpu_s']:.4f} s "
             f"({c['pairs_sampled']} pairs of one tile of {c['faces_in_tile']} faces, face loading included); "
-            f"'idle' columns: that CPU time over {args.workers} otherwise idle cores.",
+            f"'idle cores' columns: that CPU time over {args.workers} otherwise idle cores.",
         ]
-        lines[-2] = lines[-2][:-1] + " exhaustive, idle | candidates, idle |"
+        lines[-2] = lines[-2] + " exhaustive, idle cores | candidates, idle cores |"
         lines[-1] = lines[-1] + " ---: | ---: |"
     for n, p in model["projected"].items():
         line = (
@@ -286,6 +287,13 @@ def _plot(rows: list[dict], model: dict, path: Path) -> None:
             [(r["faces_seconds"] + r["pairs_planned"] / r["pairs_per_second"]) / 3600 for r in measured],
             color=color, marker="o", label=f"{label} (measured rate)",
         )  # fmt: skip
+    if "cpu" in model:
+        for key, label, color in (
+            ("exhaustive_idle_seconds", "exhaustive", "C3"),
+            ("candidate_idle_seconds", "candidates", "C0"),
+        ):
+            values = [model["projected"][n][key] / 3600 for n in model["projected"]]
+            ax.plot(sizes, values, color=color, ls="--", label=f"{label} (CPU time, idle cores)")
     ax.axhline(0.5, color="grey", ls=":", lw=0.8)
     ax.text(sizes[0], 0.55, "30 min", color="grey", fontsize=8)
     ax.set_xscale("log")

@@ -44,8 +44,8 @@ from coindie.project.work import (
     score_batch,
 )
 
-#: ``auto`` plans every pair of a side up to this many faces (~20,000 pairs: ~20 min on 2 cores at the
-#: measured ~0.1 s per pair); above it, the candidate search.
+#: ``auto`` plans every pair of a side up to this many faces (2 x 19,900 pairs for two such sides: ~20 min
+#: on 2 idle cores at the measured 0.06 CPU-s per pair); above it, the candidate search (BENCHMARK.md).
 AUTO_EXHAUSTIVE_MAX_FACES = 200
 #: Candidates per face in candidate mode (see BENCHMARK.md, "Candidate search", for the recall vs K).
 DEFAULT_K = 20
