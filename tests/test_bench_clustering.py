@@ -90,3 +90,10 @@ def test_cli_refuses_an_unknown_method(hoard: Path, tmp_path: Path) -> None:
         app, ["bench", "clustering", str(hoard), "--out", str(tmp_path), "--method", "x"]
     )
     assert result.exit_code == 2 and "unknown method" in result.output
+
+
+def test_one_group_takes_its_threshold_from_the_obverses(run: tuple[Path, dict], hoard: Path) -> None:
+    out, summary = run
+    only = benchmark_clustering(hoard, out, BenchOptions(model=DEFAULT_MODEL, groups=("DB",)))
+    assert set(only["groups"]) == {"DB"}
+    assert only["groups"]["DB"] == summary["groups"]["DB"]  # DB's τ comes from D's validation split

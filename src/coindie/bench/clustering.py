@@ -85,10 +85,12 @@ def benchmark_clustering(
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     truth = load_truth(data)
+    wanted = {"cluster_val": {THRESHOLD_FROM[g] for g in options.groups}, "cluster_test": set(options.groups)}
     faces = {
         (split, group): chosen_faces(truth, split, group, options.max_faces, options.seed)
         for split in SPLITS
-        for group in _needed_groups(options.groups)
+        for group in GROUPS
+        if group in wanted[split]
     }
     classifier = _classifier(truth, out, options, progress)
     config = BatchConfig(options.method, options.params, classifier.settings)
@@ -105,10 +107,6 @@ def benchmark_clustering(
     _write_clusters(graphs, summary, out)
     _plot(graphs, faces, summary, out / "fmi_vs_threshold.png")
     return summary
-
-
-def _needed_groups(groups: tuple[str, ...]) -> list[str]:
-    return sorted(set(groups) | {THRESHOLD_FROM[g] for g in groups}, key=list(GROUPS).index)
 
 
 def chosen_faces(
