@@ -114,8 +114,9 @@ def _measure(project_dir: Path, ks: list[int]) -> tuple[list[dict], dict[str, fl
     project = open_project(project_dir)
     labels = project.labels()
     rows = project.db.execute(
-        "SELECT s.face_id, s.side, c.descriptor FROM scans s JOIN scan_cache c ON c.content_hash = s.content_hash "
-        "WHERE s.status = 'ok' ORDER BY s.face_id"
+        "SELECT s.face_id, s.side, c.descriptor FROM scans s "
+        "JOIN scan_cache c ON c.content_hash = s.content_hash "
+        "WHERE s.status = 'ok' GROUP BY s.face_id ORDER BY s.face_id"
     ).fetchall()
     results, timings = [], {}
     for side in sorted({r["side"] for r in rows}):
@@ -136,13 +137,15 @@ def _measure(project_dir: Path, ks: list[int]) -> tuple[list[dict], dict[str, fl
 
 def _markdown(results: list[dict], timings: dict[str, float], machine: str) -> str:
     lines = [
-        "| side | index | K | faces | dies | candidate pairs | all pairs | pair recall | faces with a partner found | dies connected |"
+        "| side | index | K | faces | dies | candidate pairs | all pairs | pair recall "
+        "| faces with a partner found | dies connected |"
     ]
     lines.append("| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |")
     for r in results:
         n = r["n_faces"]
         lines.append(
-            f"| {r['side']} | {r['index']} | {r['k']} | {n} | {r['n_dies']} | {r['n_candidate_pairs']:,} | {n * (n - 1) // 2:,} | "
+            f"| {r['side']} | {r['index']} | {r['k']} | {n} | {r['n_dies']} | {r['n_candidate_pairs']:,} "
+            f"| {n * (n - 1) // 2:,} | "
             f"{r['pair_recall']:.1%} | {r['face_recall']:.2%} | {r['die_connected']:.2%} |"
         )
     lines += ["", "| step | seconds |", "| --- | ---: |"]
