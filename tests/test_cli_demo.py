@@ -31,6 +31,12 @@ def test_demo_runs_the_die_study_end_to_end_and_resumes(tmp_path) -> None:
     fmi = [float(v) for v in re.findall(r"FMI (\d\.\d+)", result.output)]
     assert len(fmi) == 2 and min(fmi) > 0.5, result.output
     assert len(labels) == len(faces)
+    # the clustering command reads the project directly (both sides, no cross-side links)
+    both = CliRunner().invoke(
+        app, ["cluster", str(tmp_path / "project"), "--auto", "-o", str(tmp_path / "all.csv")]
+    )
+    assert both.exit_code == 0, both.output
+    assert sorted(read_clusters(tmp_path / "all.csv")) == faces
     again = CliRunner().invoke(app, args)
     assert again.exit_code == 0, again.output
     assert "0 faces prepared, 0 pairs scored" in again.output
