@@ -51,6 +51,8 @@ def outside_values(p: Param) -> list[object]:
         return ["no-such-choice", 1]
     if p.kind is bool:
         return ["yes", 1]
+    if p.kind is str:  # any text is a string (a path, say): what is refused is another kind
+        return [1, float("nan")]
     values: list[object] = ["text", float("nan")]
     step = 1 if p.kind is int else 1e-9
     if math.isfinite(p.low):
