@@ -44,6 +44,10 @@ def test_outputs_and_table(run: tuple[Path, dict], hoard: Path) -> None:
     for group, entry in summary["groups"].items():
         test_faces = [f for f in truth.faces_in("cluster_test") if f.family == group]
         assert entry["n_faces"] == len(test_faces) and entry["n_dies"] == len({f.die for f in test_faces})
+        pairs = entry["pairs"]
+        assert pairs["n_pairs"] == len(test_faces) * (len(test_faces) - 1) // 2
+        n_same = sum(a.die == b.die for a in test_faces for b in test_faces if a.face_id < b.face_id)
+        assert pairs["n_same_die"] == n_same
         for method, rows in entry["methods"].items():
             assert {"silhouette", "paper", "best_possible"} <= set(rows), (group, method)
             for r in rows.values():

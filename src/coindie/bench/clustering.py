@@ -168,7 +168,10 @@ def summarize(
         test, truth = graphs[("cluster_test", group)], dies[("cluster_test", group)]
         if test.n_nodes < 2:
             continue
-        entry: dict[str, Any] = {"n_faces": test.n_nodes, "n_dies": len(set(truth.values())), "methods": {}}
+        entry: dict[str, Any] = {
+            "n_faces": test.n_nodes, "n_dies": len(set(truth.values())), "pairs": pair_figures(test, truth),
+            "methods": {},
+        }  # fmt: skip
         for method in options.methods:
             rows = {}
             chosen = thresholds.get((method, THRESHOLD_FROM[group]))
@@ -186,6 +189,24 @@ def summarize(
             entry["methods"][method] = rows
         results[group] = entry
     return {"groups": results}
+
+
+def pair_figures(graph: ProbabilityGraph, truth: dict[str, str]) -> dict[str, float | int]:
+    """How well the probabilities alone separate same-die from different-die pairs (where clustering
+    scores saturate, this still tells classifiers apart): ROC AUC, same-die pairs at probability 0 (their
+    registration was refused), the highest different-die probability and how many pass 0.5."""
+    from sklearn.metrics import roc_auc_score
+
+    same = np.array([truth[a] == truth[b] for a, b, _ in graph.edges()], dtype=bool)
+    p = graph.probability
+    figures: dict[str, float | int] = {"n_pairs": int(len(p)), "n_same_die": int(same.sum())}
+    if same.any() and (~same).any():
+        figures["auc"] = float(roc_auc_score(same, p))
+        figures["max_other_probability"] = float(p[~same].max())
+        figures["other_above_half"] = int(np.sum(p[~same] > 0.5))
+    if same.any():
+        figures["same_die_at_zero"] = int(np.sum(p[same] == 0.0))
+    return figures
 
 
 def _oracle(test: ProbabilityGraph, truth: dict[str, str], method: str) -> dict[str, Any]:
@@ -252,6 +273,19 @@ def summary_markdown(summary: dict[str, Any]) -> str:
                         ]
                     )
                 )  # fmt: skip
+    lines += ["", "Pairs of each test group (the probabilities alone):", ""]
+    lines += [_row(["group", "pairs", "same-die", "AUC", "same-die at 0", "max other p", "others > 0.5"])]
+    lines += [_row(["---"] + ["---:"] * 6)]
+    for group, entry in summary["groups"].items():
+        f = entry.get("pairs", {})
+        cells = [
+            group,
+            str(f.get("n_pairs", "–")),
+            str(f.get("n_same_die", "–")),
+            _maybe(f.get("auc"), ".4f"),
+        ]
+        cells += [str(f.get("same_die_at_zero", "–")), _maybe(f.get("max_other_probability"), ".3f")]
+        lines.append(_row([*cells, str(f.get("other_above_half", "–"))]))
     lines += [
         "",
         "The paper's Table 3 (real Riedones3D test sets, FCGF + TEASER registration, τ = 0.95):",
@@ -266,6 +300,10 @@ def summary_markdown(summary: dict[str, Any]) -> str:
     if run:
         lines += ["", f"Run: {json.dumps(_json_ready(run))}"]
     return "\n".join(lines) + "\n"
+
+
+def _maybe(value: float | None, spec: str) -> str:
+    return "–" if value is None else format(value, spec)
 
 
 def _row(cells: list[str]) -> str:

@@ -89,7 +89,8 @@ def measure_pairs(
         for rows in _run(tiles(todo), config, workers):
             for score in rows:
                 append(score)
-                done[(score.source_id, score.target_id)] = score
+                # What the CSV holds (histograms to 6 digits): a resumed run then gives the same results.
+                done[(score.source_id, score.target_id)] = _score({k: str(v) for k, v in _row(score).items()})
             if progress:
                 progress(len(rows), 0)
     return {(t.source, t.target): done[(t.source, t.target)] for t in tasks}
