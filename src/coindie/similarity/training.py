@@ -156,6 +156,11 @@ def train_similarity(
 ) -> SameDieClassifier:
     """Draw the training pairs, measure them (resuming ``work_csv``), fit and return the classifier."""
     config = config or BatchConfig(settings=classifier.settings if classifier else BatchConfig().settings)
+    if classifier is not None and classifier.settings != config.settings:
+        raise ParameterError(
+            "the classifier's histogram settings differ from the batch's: it would be trained on histograms "
+            f"it does not describe ({classifier.settings} vs {config.settings})"
+        )
     pairs = labelled_pairs(
         truth,
         split,
