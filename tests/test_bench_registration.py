@@ -17,21 +17,9 @@ from coindie.preprocess.frames import rotation_angle_deg
 
 
 @pytest.fixture(scope="module")
-def hoard(tmp_path_factory):
-    from coindie.synth.design import DieParams
-    from coindie.synth.hoard import PhysicsParams, synthesize
-    from coindie.synth.scanner import ScanParams
-    from coindie.synth.strike import StrikeParams
-
-    out = tmp_path_factory.mktemp("tiny_hoard")
-    # Coarse (0.1 mm scanner) to stay fast; no bends or double strikes, whose truth is not rigid.
-    physics = PhysicsParams(
-        die=DieParams(pitch_mm=0.05),
-        strike=StrikeParams(bend_probability=0.0, double_probability=0.0),
-        scan=ScanParams(spacing_mm=0.1),
-    )
-    synthesize(out, preset="tiny", seed=3, physics=physics, workers=1)
-    return out
+def hoard(training_hoard):
+    """The tiny preset at 0.1 mm, no bends or double strikes, whose truth is not rigid (conftest)."""
+    return training_hoard
 
 
 def test_plan_covers_every_pair_within_each_die_of_the_split(hoard) -> None:

@@ -86,11 +86,11 @@ def main() -> None:
 
 # Command groups register themselves on ``app`` when imported.
 from coindie.cli import bench as _bench  # noqa: E402,F401
+from coindie.cli import cluster as _cluster  # noqa: E402,F401
 from coindie.cli import demo as _demo  # noqa: E402,F401
 from coindie.cli import project as _project  # noqa: E402,F401
 from coindie.cli import registration as _registration  # noqa: E402,F401
 from coindie.cli import scans as _scans  # noqa: E402,F401
+from coindie.cli import similarity as _similarity  # noqa: E402,F401
 from coindie.cli import synth as _synth  # noqa: E402,F401
 from coindie.cli import train as _train  # noqa: E402,F401
-from coindie.cli import similarity as _similarity  # noqa: E402,F401
-from coindie.cli import cluster as _cluster  # noqa: E402,F401

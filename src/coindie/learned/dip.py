@@ -23,9 +23,9 @@ import numpy as np
 from coindie.errors import CoinDieError
 from coindie.learned.cache import DescriptorCache
 from coindie.learned.lrf import canonical_patches
+from coindie.registration.features import grid_support
 from coindie.registration.geometry import Cloud, FloatArray, IntArray, content_key
 from coindie.registration.params import Configurable, param
-from coindie.scan import Scan
 
 if TYPE_CHECKING:
     from coindie.learned.dip_network import DIPNet
@@ -140,13 +140,7 @@ class DIPDescriptor(Configurable):
         return load_model(path)
 
     def support(self, cloud: Cloud) -> Cloud:
-        if self.voxel == 0:
-            return cloud
-        from coindie.preprocess.sampling import grid_sample
-
-        sampled = grid_sample(Scan(points=cloud.points, normals=cloud.normals), self.voxel)
-        assert sampled.normals is not None
-        return Cloud(sampled.points, sampled.normals)
+        return grid_support(cloud, self.voxel)
 
     def describe(self, support: Cloud, at: IntArray) -> FloatArray:
         if self.model is not None:  # a network being trained changes: nothing to keep

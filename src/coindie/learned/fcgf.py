@@ -31,7 +31,6 @@ from coindie.errors import CoinDieError, ParameterError
 from coindie.learned.cache import DescriptorCache
 from coindie.registration.geometry import Cloud, FloatArray, IntArray, content_key
 from coindie.registration.params import Configurable, param
-from coindie.scan import Scan
 
 if TYPE_CHECKING:
     import torch
@@ -196,11 +195,9 @@ class FCGFDescriptor(Configurable):
         return _cached_model(str(path.resolve()), self.device)
 
     def support(self, cloud: Cloud) -> Cloud:
-        from coindie.preprocess.sampling import grid_sample
+        from coindie.registration.features import grid_support
 
-        sampled = grid_sample(Scan(points=cloud.points, normals=cloud.normals), self.model().config.voxel)
-        assert sampled.normals is not None
-        return Cloud(sampled.points, sampled.normals)
+        return grid_support(cloud, self.model().config.voxel)
 
     def describe(self, support: Cloud, at: IntArray) -> FloatArray:
         def compute() -> FloatArray:

@@ -64,6 +64,20 @@ def learner_for(config: ModelConfig) -> Learner:
     return DIPLearner() if isinstance(config, DIPConfig) else FCGFLearner()
 
 
+def _pair_loss(
+    options: TrainOptions,
+    f_source: torch.Tensor,
+    f_target: torch.Tensor,
+    pair: TrainingPair,
+    generator: torch.Generator,
+) -> Losses:
+    """The loss of a pair whose every point has a descriptor (rows of ``f_source`` and ``f_target``)."""
+    device = options.device
+    x_source, x_target = (torch.as_tensor(c, device=device) for c in (pair.source, pair.target))
+    matches = torch.as_tensor(pair.matches, device=device)
+    return options.loss(f_source, f_target, matches, x_source, x_target, generator)
+
+
 def _mean_terms(per_pair: list[Losses]) -> Losses:
     return {key: torch.stack([terms[key] for terms in per_pair]).mean() for key in per_pair[0]}
 
@@ -87,20 +101,18 @@ class FCGFLearner:
         generator: torch.Generator,
     ) -> Losses:
         """Mean loss terms of a batch of pairs, all clouds through the network in one pass."""
-        loss, device = options.loss, options.device
+        device = options.device
         clouds = [c for pair in batch for c in (pair.source, pair.target)]
         sizes = [len(c) for c in clouds]
         points = torch.as_tensor(np.concatenate(clouds), dtype=torch.float64, device=device)
         index = torch.repeat_interleave(torch.arange(len(clouds)), torch.tensor(sizes)).to(device)
         features = model.describe_points(points, index).split(sizes)
-        per_pair = []
-        for k, pair in enumerate(batch):
-            matches = torch.as_tensor(pair.matches, device=device)
-            x_source, x_target = (torch.as_tensor(c, device=device) for c in (pair.source, pair.target))
-            per_pair.append(
-                loss(features[2 * k], features[2 * k + 1], matches, x_source, x_target, generator)
-            )
-        return _mean_terms(per_pair)
+        return _mean_terms(
+            [
+                _pair_loss(options, features[2 * k], features[2 * k + 1], pair, generator)
+                for k, pair in enumerate(batch)
+            ]
+        )
 
     def evaluate(
         self,
@@ -114,9 +126,7 @@ class FCGFLearner:
         f_source, f_target = (
             model.describe_points(torch.as_tensor(c, device=device)) for c in (pair.source, pair.target)
         )
-        x_source, x_target = (torch.as_tensor(c, device=device) for c in (pair.source, pair.target))
-        matches = torch.as_tensor(pair.matches, device=device)
-        terms = options.loss(f_source, f_target, matches, x_source, x_target, generator)
+        terms = _pair_loss(options, f_source, f_target, pair, generator)
         s, t = (torch.as_tensor(rows, device=device) for rows in at)
         return terms, f_source[s].double().cpu().numpy(), f_target[t].double().cpu().numpy()
 

@@ -36,6 +36,17 @@ class FeatureExtractor(Protocol):
         ...
 
 
+def grid_support(cloud: Cloud, voxel: float) -> Cloud:
+    """The cloud grid-sampled at ``voxel`` mm, normals kept (0: the cloud as it is)."""
+    if voxel == 0:
+        return cloud
+    from coindie.preprocess.sampling import grid_sample
+
+    sampled = grid_sample(Scan(points=cloud.points, normals=cloud.normals), voxel)
+    assert sampled.normals is not None
+    return Cloud(sampled.points, sampled.normals)
+
+
 @dataclass(frozen=True, kw_only=True)
 class FPFH(Configurable):
     """Fast Point Feature Histograms (Rusu et al. 2009), 33 bins, from Open3D, on a coarser grid."""
@@ -49,13 +60,7 @@ class FPFH(Configurable):
     max_neighbours: int = param(100, low=3, doc="at most this many (nearest) neighbours within the radius")
 
     def support(self, cloud: Cloud) -> Cloud:
-        if self.voxel == 0:
-            return cloud
-        from coindie.preprocess.sampling import grid_sample
-
-        sampled = grid_sample(Scan(points=cloud.points, normals=cloud.normals), self.voxel)
-        assert sampled.normals is not None
-        return Cloud(sampled.points, sampled.normals)
+        return grid_support(cloud, self.voxel)
 
     def describe(self, support: Cloud, at: IntArray) -> FloatArray:
         import open3d as o3d
