@@ -17,13 +17,14 @@ from __future__ import annotations
 import argparse
 import json
 import math
-import platform
 import sys
 import time
 from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
+
+from coindie.bench.machine import describe_machine
 
 KS = (1, 2, 3, 5, 10, 20, 50)
 
@@ -59,7 +60,7 @@ def main(argv: list[str] | None = None) -> int:
         )
     results, search = _measure(project_dir, ks)
     timings |= search
-    machine = _machine(args.workers)
+    machine = describe_machine(args.workers)
     (args.out / "candidates.json").write_text(
         json.dumps({"machine": machine, "timings": timings, "results": results}, indent=2) + "\n"
     )
@@ -183,19 +184,6 @@ def _plot(results: list[dict], path: Path) -> None:
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
-
-
-def _machine(workers: int) -> str:
-    import os
-
-    cpu = platform.processor() or platform.machine()
-    try:
-        with open("/proc/cpuinfo") as handle:
-            names = [line.split(":", 1)[1].strip() for line in handle if line.startswith("model name")]
-        cpu = names[0] if names else cpu
-    except OSError:
-        pass
-    return f"{cpu}, {os.cpu_count()} cores, {workers} worker process(es), Python {platform.python_version()}"
 
 
 if __name__ == "__main__":

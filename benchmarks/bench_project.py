@@ -24,8 +24,7 @@ from pathlib import Path
 
 import numpy as np
 
-sys.path.insert(0, str(Path(__file__).parent))
-from bench_candidates import _machine  # noqa: E402  (the same machine line in every report)
+from coindie.bench.machine import describe_machine
 
 PROJECTED_SIZES = (100, 300, 1_000, 2_070, 10_000, 100_000)
 
@@ -66,7 +65,7 @@ def main(argv: list[str] | None = None) -> int:
             p["candidate_idle_seconds"] = (
                 face_cpu + per_face * int(n) * model["cpu"]["pair_cpu_s"]
             ) / args.workers
-    machine = _machine(args.workers)
+    machine = describe_machine(args.workers)
     document = {"machine": machine, "runs": rows, "model": model}
     (args.out / "throughput.json").write_text(json.dumps(document, indent=2) + "\n")
     (args.out / "throughput.md").write_text(_markdown(rows, model, machine, args))

@@ -16,7 +16,6 @@ from __future__ import annotations
 import csv
 import itertools
 import json
-import os
 import time
 from collections.abc import Callable, Iterable, Iterator
 from concurrent.futures import ProcessPoolExecutor
@@ -27,6 +26,7 @@ from pathlib import Path
 import numpy as np
 from scipy.spatial.transform import Rotation
 
+from coindie.bench.machine import describe_machine
 from coindie.bench.truth import HoardTruth, load_truth
 from coindie.errors import ParameterError
 from coindie.scan import Scan
@@ -197,7 +197,7 @@ def benchmark_registration(
                 progress(1, 0)
     wanted = {(j.method, j.source, j.target) for j in jobs}
     rows = [r for r in read_pairs(pairs_csv) if (r["method"], r["source"], r["target"]) in wanted]
-    return write_reports(rows, methods, out, machine=_machine(workers))
+    return write_reports(rows, methods, out, machine=describe_machine(workers))
 
 
 def _jobs(
@@ -414,19 +414,3 @@ def _plot(rows: list[dict[str, object]], methods: list[str], dies: list[str], pa
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
-
-
-def _machine(workers: int) -> str:
-    import platform
-
-    cpu = platform.processor() or platform.machine()
-    try:
-        with open("/proc/cpuinfo") as handle:
-            names = [line.split(":", 1)[1].strip() for line in handle if line.startswith("model name")]
-        cpu = names[0] if names else cpu
-    except OSError:
-        pass
-    return (
-        f"{cpu} ({platform.machine()}), {os.cpu_count()} cores, {workers} worker process(es) of one BLAS "
-        f"thread, Python {platform.python_version()}"
-    )
