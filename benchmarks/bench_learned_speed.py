@@ -3,8 +3,9 @@
     .venv/bin/python benchmarks/bench_learned_speed.py HOARD [--faces 10] [--threads 1]
 
 Faces of the registration test split, grid-sampled at 0.1 mm as the benchmark gives them. For each face:
-FCGF's descriptors of every voxel (one pass of the sparse U-Net) and DIP's descriptors of 5000 random
-points (5000 patches through the PointNet), with the shipped weights (a method without shipped weights is
+FCGF's descriptors of every voxel as a source (one pass of the sparse U-Net) and as a target (one pass per
+turn its model searches: ``spins`` views), and DIP's descriptors of 5000 random points (5000 patches
+through the PointNet), with the shipped weights (a method without shipped weights is
 listed as such; ``--fcgf-weights FILE`` times FCGF with any model file, trained or not: the cost does not
 depend on the weights). Prints the median seconds per face and the points per face (no pass/fail).
 """
@@ -49,6 +50,9 @@ def main() -> None:
             ),
             "DIP (5000 points)": DIPDescriptor(),
         }
+        fcgf = extractors["FCGF (every voxel)"]
+        if fcgf.weights_path.is_file() and fcgf.model().config.spins > 1:
+            extractors[f"FCGF (every voxel, {fcgf.model().config.spins} views)"] = fcgf
         if device == "cuda":
             extractors.pop("DIP (5000 points)")  # DIP runs on the CPU here
         if not extractors["FCGF (every voxel)"].weights_path.is_file():
@@ -65,7 +69,11 @@ def main() -> None:
                     else np.sort(np.random.default_rng(0).choice(n, min(n, 5000), replace=False))
                 )
                 start = time.perf_counter()
-                extractor.describe(support, at)  # each face is new to the descriptor cache
+                # Each face is new to the descriptor cache.
+                if "views" in label:
+                    extractor.describe_views(support, at)
+                else:
+                    extractor.describe(support, at)
                 seconds.append(time.perf_counter() - start)
                 sizes.append(len(at))
             print(

@@ -22,17 +22,21 @@ import numpy as np
 from rich.progress import track
 from threadpoolctl import threadpool_limits
 
-from coindie.bench.registration import _grid_scan, plan_pairs
+from coindie.bench.registration import _grid_scan, parse_method, plan_pairs
 from coindie.bench.truth import load_truth
+from coindie.learned.cache import clear_caches
 from coindie.registration import get_method
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("hoard", type=Path)
-    parser.add_argument("--method", default="relief")
+    parser.add_argument(
+        "--method", default="relief", help="a method, or a benchmark label: fcgf+icp[matcher.n_points=250]"
+    )
     parser.add_argument("--pairs", type=int, default=60)
     args = parser.parse_args()
+    name, params = parse_method(args.method)
 
     truth = load_truth(args.hoard)
     pairs = plan_pairs(truth, max_pairs=args.pairs)
@@ -45,7 +49,8 @@ def main() -> None:
         for situation in ("cold", "new source", "all-pairs"):
             times, stages = [], {}
             for source, target in track(clouds, description=situation):
-                method = get_method(args.method)  # a fresh method: nothing cached
+                method = get_method(name, **params)  # a fresh method: nothing cached
+                clear_caches()  # nor kept by the learned descriptors from an earlier pair
                 if situation in ("new source", "all-pairs"):
                     method.register(target, target)
                 if situation == "all-pairs":

@@ -137,7 +137,14 @@ def test_a_saved_model_loads_with_the_same_weights_and_config(surface, tmp_path)
     model = new_model(FCGFConfig(voxel=0.3, channels=(8, 16, 32), out_dim=16), seed=4).eval()
     path = save_model(model, tmp_path / "m.safetensors", {"note": "test"})
     header = json.loads((tmp_path / "m.json").read_text())
-    assert header["config"] == {"voxel": 0.3, "channels": [8, 16, 32], "out_dim": 16, "in_channels": 1}
+    assert header["config"] == {
+        "voxel": 0.3,
+        "channels": [8, 16, 32],
+        "out_dim": 16,
+        "in_channels": 1,
+        "level": False,
+        "spins": 1,
+    }
     loaded = load_model(path)
     assert loaded.config == model.config and not loaded.training
     for key, value in model.state_dict().items():

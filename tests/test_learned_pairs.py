@@ -92,6 +92,19 @@ def test_augmentations_stay_within_the_papers_ranges() -> None:
     np.testing.assert_allclose(still, np.eye(4), atol=1e-12)
 
 
+def test_the_two_clouds_of_a_pair_share_one_scale_but_not_one_rotation() -> None:
+    rng = np.random.default_rng(1)
+    scales, turns = [], []
+    for _ in range(50):
+        A, B = TRAINING.draw_pair(rng, np.zeros(3), np.ones(3))
+        scale_a, scale_b = (np.cbrt(np.linalg.det(M[:3, :3])) for M in (A, B))
+        scales.append(scale_a)
+        assert scale_a == pytest.approx(scale_b)
+        turns.append(np.allclose(A[:3, :3] / scale_a, B[:3, :3] / scale_b))
+    assert np.ptp(scales) > 0.2  # the scale is drawn per pair, over 0.9-1.2
+    assert not any(turns)
+
+
 def _truth(dies: dict[str, int]) -> HoardTruth:
     faces, number = {}, 0
     for die, size in dies.items():

@@ -18,8 +18,6 @@ import numpy as np
 import pytest
 
 from coindie.errors import InvalidScanError
-from coindie.learned.fcgf import SHIPPED_WEIGHTS as SHIPPED_FCGF
-from coindie.learned.fcgf import ModelFileError
 from coindie.registration import (
     RegistrationResult,
     get_method,
@@ -38,10 +36,7 @@ COARSE_TOLERANCE = (1.0, 0.3)
 TOLERANCE = {"fpfh+teaser": COARSE_TOLERANCE, "fpfh+ransac": COARSE_TOLERANCE}
 DEFAULT_TOLERANCE = (0.5, 0.1)
 
-#: Learned methods whose weights are not shipped cannot register: they must say so (see the last test).
-#: FCGF's are not shipped yet: on this project's CPUs its training did not converge (BENCHMARK.md).
-WITHOUT_WEIGHTS = [] if SHIPPED_FCGF.is_file() else [m for m in list_methods() if m.split("+")[0] == "fcgf"]
-METHODS = [m for m in list_methods() if m not in WITHOUT_WEIGHTS]
+METHODS = list_methods()
 
 
 def tolerance(method: str) -> tuple[float, float]:
@@ -171,13 +166,3 @@ def test_a_scan_without_normals_gets_estimated_ones(pairs) -> None:
     result = get_method("icp").register(bare, pair.target)
     assert result.valid, result.reason
     assert_close(pair.T_target_source, result.T_target_source, "icp")
-
-
-@pytest.mark.parametrize("method", WITHOUT_WEIGHTS or ["(every learned method has weights)"])
-def test_a_learned_method_without_weights_says_how_to_get_them(method: str, pairs) -> None:
-    if not WITHOUT_WEIGHTS:
-        pytest.skip("every learned method has shipped weights")
-    pair = pair_for(method, pairs)
-    with pytest.raises(ModelFileError, match="coindie train fcgf") as error:
-        get_method(method).register(pair.source, pair.target)
-    assert str(SHIPPED_FCGF) in str(error.value)

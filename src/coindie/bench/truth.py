@@ -103,3 +103,13 @@ def _splits(path: Path) -> dict[str, set[str]]:
         for row in csv.DictReader(handle):
             splits.setdefault(row["split"].strip(), set()).add(parse_face_id(row["face_id"]).key)
     return splits
+
+
+def hoard_recipe(root: Path) -> dict[str, object]:
+    """The generator settings of a synthetic hoard (preset, scale, seed: enough to make it again), or
+    nothing for a folder of real scans; the folder's path alone names a place on one machine only."""
+    try:
+        document = json.loads((Path(root) / "hoard.json").read_text())
+    except (OSError, ValueError):
+        return {}
+    return {key: document[key] for key in ("preset", "scale", "seed", "coindie_version") if key in document}

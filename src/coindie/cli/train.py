@@ -67,15 +67,32 @@ def fcgf(
     channels: Annotated[
         str, typer.Option(help="Encoder channels per level, comma-separated.")
     ] = "16,32,64,128",
+    level: Annotated[
+        bool,
+        typer.Option(
+            help="Turn each face's fitted plane to z = 0 before voxelising (exact tilt invariance)."
+        ),
+    ] = False,
+    spins: Annotated[
+        int,
+        typer.Option(
+            help="Turns of the target searched when matching; training pairs are then turned alike within "
+            "±180°/spins (1: the paper's, invariance learned from ±180° augmentation)."
+        ),
+    ] = 1,
     crop_radius: Crop = 0.0,
     max_val_pairs: ValPairs = 32,
     fmr_points: FMRPoints = 5000,
     quiet: Quiet = False,
 ) -> None:
     """Train FCGF as the paper did: contrastive loss with hardest negatives, SGD, augmented pairs."""
+    from coindie.errors import CoinDieError
     from coindie.learned.fcgf import FCGFConfig
 
-    model = FCGFConfig(voxel=voxel, channels=_channels(channels))
+    try:
+        model = FCGFConfig(voxel=voxel, channels=_channels(channels), level=level, spins=spins)
+    except CoinDieError as error:
+        raise ParameterError(str(error)) from None
     _run(data, out, model, _shared(locals()), resume, quiet)
 
 

@@ -9,6 +9,12 @@ of two 3x3x3 convolutions; a decoder of transposed convolutions whose outputs ar
 outputs. About 1.7 M parameters (6.6 MB in float32). Its receptive field spans ~5 mm, a few letters or a
 curl of hair.
 
+The paper's FCGF learns invariance to rotations from augmentation alone; on a CPU it does not (its held-out
+inlier ratio stays at chance, docs/learned.md), so a model can instead level each face (its fitted plane
+to z = 0: exact invariance to tilts) and learn only small turns about the coin's axis (±180°/``spins``),
+the target then being described at ``spins`` turns and matched against all of them
+(:mod:`coindie.learned.turns`). The shipped model does so with 16 turns.
+
 :class:`FCGFDescriptor` is the registration's :class:`~coindie.registration.features.FeatureExtractor`:
 descriptors of the cloud grid-sampled at the model's voxel, from the shipped weights
 (``weights/fcgf.safetensors`` and its ``fcgf.json``) or from a model file given as ``weights``.
@@ -29,7 +35,7 @@ import numpy as np
 
 from coindie.errors import CoinDieError, ParameterError
 from coindie.learned.cache import DescriptorCache
-from coindie.registration.geometry import Cloud, FloatArray, IntArray, content_key
+from coindie.registration.geometry import Cloud, FloatArray, IntArray, content_key, transform_points
 from coindie.registration.params import Configurable, param
 
 if TYPE_CHECKING:
@@ -52,12 +58,33 @@ class ModelFileError(CoinDieError, ValueError):
 
 @dataclass(frozen=True)
 class FCGFConfig:
-    """The architecture (saved with the weights: a model is rebuilt from it)."""
+    """The architecture and its input (saved with the weights: a model is rebuilt from it).
+
+    ``level`` and ``spins`` are coindie's answer to what a CPU can learn (docs/learned.md): the network's
+    descriptors do not learn invariance to turns about the coin's axis from augmentation within CPU hours
+    (held-out inlier ratio at chance after 3,000 steps of the paper's ±180° training, while pairs turned
+    alike learn at once), so a model may instead be trained on pairs turned alike up to ±180°/``spins``,
+    and describe the target face at ``spins`` turns about its axis when matching. ``level`` turns each
+    face so that its fitted plane is z = 0 before voxelising: the invariance to tilts is then exact.
+    ``spins = 1`` and ``level = False`` is the paper's FCGF."""
 
     voxel: float = 0.1  # mm, the finest grid
     channels: tuple[int, ...] = (16, 32, 64, 128)  # encoder channels per level (stride 1, 2, 4, ...)
     out_dim: int = 32
     in_channels: int = 1  # the input feature is "ones"
+    level: bool = False  # turn each face's fitted plane to z = 0 before voxelising
+    spins: int = 1  # turns of the target about its axis searched when matching (1: none)
+
+    def __post_init__(self) -> None:
+        if self.spins < 1 or self.voxel <= 0:
+            raise ParameterError(
+                f"An FCGF model needs spins >= 1 and voxel > 0. Got {self.spins}, {self.voxel}."
+            )
+
+    @property
+    def turn_tolerance_deg(self) -> float:
+        """The largest turn between the two faces of a training pair: half the step between spins."""
+        return 180.0 / self.spins
 
     def to_json(self) -> dict[str, Any]:
         return asdict(self) | {"channels": list(self.channels)}
@@ -69,7 +96,33 @@ class FCGFConfig:
             channels=tuple(int(c) for c in data["channels"]),
             out_dim=int(data["out_dim"]),
             in_channels=int(data.get("in_channels", 1)),
+            level=bool(data.get("level", False)),
+            spins=int(data.get("spins", 1)),
         )
+
+
+def levelling(points: FloatArray, normals: FloatArray) -> FloatArray:
+    """``T_level_cloud``: the smallest rotation, about the centroid, that turns the face's robustly
+    fitted plane (:func:`coindie.preprocess.canonical.canonical_frame`) to z, face up. The smallest one
+    keeps the face's own turn about its axis (no canonical spin is imposed)."""
+    from coindie.preprocess.canonical import canonical_frame
+    from coindie.preprocess.frames import rigid, rotation_between
+    from coindie.scan import Scan
+
+    frame = canonical_frame(Scan(points=points, normals=normals))
+    up = frame.T_canonical_scan[:3, :3].T @ np.array([0.0, 0.0, 1.0])
+    R = rotation_between(up, np.array([0.0, 0.0, 1.0]))
+    centre = points.mean(axis=0)
+    return rigid(R, centre - R @ centre)
+
+
+def spin(angle_deg: float, centre: FloatArray) -> FloatArray:
+    """The 4x4 turn by ``angle_deg`` about the z axis through ``centre``."""
+    from coindie.preprocess.frames import rigid
+
+    c, s = np.cos(np.radians(angle_deg)), np.sin(np.radians(angle_deg))
+    R = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+    return rigid(R, centre - R @ centre)
 
 
 def _build_network(config: FCGFConfig) -> torch.nn.Module:
@@ -200,12 +253,56 @@ class FCGFDescriptor(Configurable):
         return grid_support(cloud, self.model().config.voxel)
 
     def describe(self, support: Cloud, at: IntArray) -> FloatArray:
+        """Descriptors of the face as it lies (the source's: one pass of the network)."""
+        return self._views(support, 1)[0][at]
+
+    def describe_views(self, support: Cloud, at: IntArray) -> FloatArray:
+        """(spins, len(at), D): the descriptors of the points ``at`` with the face turned by
+        ``k * 360° / spins`` about its axis, k = 0..spins-1 (one view when the model has ``spins = 1``)."""
+        return self._views(support, self.model().config.spins)[:, at]
+
+    def _views(self, support: Cloud, spins: int) -> FloatArray:
         def compute() -> FloatArray:
             with torch_threads(self.threads):
-                return describe_cloud(self.model(), support.points, self.device)
+                return describe_views(self.model(), support.points, support.normals, self.device, spins)
 
-        key = (str(self.weights_path), self.device, content_key(support.points))
-        return _descriptor_cache.get(key, compute)[at]
+        key = (str(self.weights_path), self.device, spins, content_key(support.points))
+        return _descriptor_cache.get(key, compute)
+
+
+def describe_cloud(
+    model: torch.nn.Module, points: FloatArray, device: str = "cpu", normals: FloatArray | None = None
+) -> FloatArray:
+    """(N, out_dim) float64 descriptors of an (N, 3) cloud in mm, by a model in evaluation mode (unit
+    normals needed when the model levels its input)."""
+    return describe_views(model, points, normals, device, spins=1)[0]
+
+
+def describe_views(
+    model: torch.nn.Module,
+    points: FloatArray,
+    normals: FloatArray | None,
+    device: str = "cpu",
+    spins: int | None = None,
+) -> FloatArray:
+    """(spins, N, out_dim) descriptors of an (N, 3) cloud: levelled when the model's config says so (its
+    unit normals are then needed), then turned ``spins`` times (the config's unless given) about its
+    axis, all turns through the network in one batch."""
+    import torch
+
+    config: FCGFConfig = model.config
+    spins = config.spins if spins is None else spins
+    if config.level:
+        if normals is None:
+            raise ParameterError("This FCGF model levels its input: the cloud's normals are needed.")
+        points = transform_points(levelling(points, normals), points)
+    centre = points.mean(axis=0)
+    turned = [transform_points(spin(360.0 * k / spins, centre), points) for k in range(spins)]
+    with torch.inference_mode():
+        tensor = torch.as_tensor(np.concatenate(turned), dtype=torch.float64, device=device)
+        batch = torch.arange(spins, device=device).repeat_interleave(len(points))
+        features = model.describe_points(tensor, batch).double().cpu().numpy()
+    return features.reshape(spins, len(points), -1)
 
 
 @contextmanager
@@ -220,12 +317,3 @@ def torch_threads(n: int) -> Iterator[None]:
         yield
     finally:
         torch.set_num_threads(before)
-
-
-def describe_cloud(model: torch.nn.Module, points: FloatArray, device: str = "cpu") -> FloatArray:
-    """(N, out_dim) float64 descriptors of an (N, 3) cloud in mm, by a model in evaluation mode."""
-    import torch
-
-    with torch.inference_mode():
-        tensor = torch.as_tensor(np.ascontiguousarray(points), dtype=torch.float64, device=device)
-        return model.describe_points(tensor).double().cpu().numpy()

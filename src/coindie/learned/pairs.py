@@ -4,9 +4,9 @@ Faces come from one split of the hoard (``registration_train``: in the ``riedone
 without beard), grid-sampled at the model's voxel (mean position per cell). A pair is two faces of the same
 die; its matches are the source points whose position moved by the truth (``T_true(source, target)`` of
 truth.json) has a target point within ``match_radius`` (one voxel). Each face is then moved by its own
-random augmentation (the paper's: rotation within ±25° about x and y, ±180° about z, scale 0.9-1.2, about
-the face's centroid); the matches, made before, stay true. Everything is drawn from a seed: the same seed,
-epoch and pair give the same training pair.
+random rotation about its centroid (the paper's: within ±25° about x and y, ±180° about z) and both by
+one random scale (0.9-1.2); the matches, made before, stay true. Everything is drawn from a seed: the same
+seed, epoch and pair give the same training pair.
 """
 
 from __future__ import annotations
@@ -36,14 +36,26 @@ class Augmentation:
     spin_deg: float = 180.0  # about z, within ±
     scale: tuple[float, float] = (0.9, 1.2)
 
-    def draw(self, rng: np.random.Generator, center: FloatArray) -> FloatArray:
-        """A 4x4 similarity ``p -> s R (p - center) + center``."""
+    def draw(self, rng: np.random.Generator, center: FloatArray, scale: float | None = None) -> FloatArray:
+        """A 4x4 similarity ``p -> s R (p - center) + center`` (``s`` drawn unless given)."""
         angles = [rng.uniform(-self.tilt_deg, self.tilt_deg) for _ in range(2)]
         angles.append(rng.uniform(-self.spin_deg, self.spin_deg))
+        s = rng.uniform(*self.scale) if scale is None else scale
         A = np.eye(4)
-        A[:3, :3] = rng.uniform(*self.scale) * Rotation.from_euler("xyz", angles, degrees=True).as_matrix()
+        A[:3, :3] = s * Rotation.from_euler("xyz", angles, degrees=True).as_matrix()
         A[:3, 3] = center - A[:3, :3] @ center
         return A
+
+    def draw_pair(
+        self, rng: np.random.Generator, center_a: FloatArray, center_b: FloatArray
+    ) -> tuple[FloatArray, FloatArray]:
+        """Similarities of the two clouds of a pair: each its own rotation, one scale for both.
+
+        As FCGF's training does: the scale stands for another voxel size (or another coin size), the same
+        for both clouds; scaling them apart would ask the descriptors to match a place with a copy of it
+        up to 1.33 times larger, which a die study must tell apart (dies are cut at one size)."""
+        scale = rng.uniform(*self.scale)
+        return self.draw(rng, center_a, scale), self.draw(rng, center_b, scale)
 
 
 #: The paper's training augmentation; validation turns clouds like the benchmark does, without scaling.
@@ -167,15 +179,33 @@ class PairSet:
         return self._clouds[face_id]
 
     def make(
-        self, index: int, seed: Sequence[int] | int, augmentation: Augmentation = TRAINING
+        self,
+        index: int,
+        seed: Sequence[int] | int,
+        augmentation: Augmentation = TRAINING,
+        turn_tolerance_deg: float | None = None,
     ) -> TrainingPair:
-        """Training pair ``index``, augmented by draws from ``seed`` (e.g. ``[seed, epoch, index]``)."""
+        """Training pair ``index``, augmented by draws from ``seed`` (e.g. ``[seed, epoch, index]``).
+
+        With ``turn_tolerance_deg``, the source is first put where the truth says it lies on the target
+        and turned about the target's axis by at most that angle; both clouds then get the same
+        augmentation (a model that searches turns when matching learns only small ones, in every pose)."""
         a, b = self.pairs[index]
         source, target = self.cloud(a), self.cloud(b)
         T = self.truth.T_true(a, b)
         matches = match_points(source, target, T, self.match_radius)
         rng = np.random.default_rng(seed)
-        A_source, A_target = augmentation.draw(rng, source.mean(0)), augmentation.draw(rng, target.mean(0))
+        if turn_tolerance_deg is None:
+            A_source, A_target = augmentation.draw_pair(rng, source.mean(0), target.mean(0))
+        else:
+            from coindie.learned.fcgf import levelling, spin
+
+            target_levelled = levelling(target, self.normals(b))
+            turn = rng.uniform(-turn_tolerance_deg, turn_tolerance_deg)
+            centre = target.mean(0)
+            turn_about_axis = np.linalg.inv(target_levelled) @ spin(turn, centre) @ target_levelled
+            A_target = augmentation.draw(rng, centre)
+            A_source = A_target @ turn_about_axis @ T
         return TrainingPair(
             f"{a}>{b}",
             transform_points(A_source, source),
@@ -185,6 +215,24 @@ class PairSet:
             _turned(A_source, self.normals(a)),
             _turned(A_target, self.normals(b)),
         )
+
+
+def level_pair(pair: TrainingPair) -> TrainingPair:
+    """Both clouds turned so that their fitted planes are z = 0 (:func:`coindie.learned.fcgf.levelling`),
+    the truth between them carried along."""
+    from coindie.learned.fcgf import levelling
+
+    L_source = levelling(pair.source, pair.source_normals)
+    L_target = levelling(pair.target, pair.target_normals)
+    return TrainingPair(
+        pair.name,
+        transform_points(L_source, pair.source),
+        transform_points(L_target, pair.target),
+        pair.matches,
+        L_target @ pair.T_target_source @ np.linalg.inv(L_source),
+        _turned(L_source, pair.source_normals),
+        _turned(L_target, pair.target_normals),
+    )
 
 
 def _turned(A: FloatArray, normals: FloatArray) -> FloatArray:

@@ -30,8 +30,8 @@ from torch import Tensor, nn
 
 from coindie.errors import ParameterError
 
-#: Bits per packed spatial coordinate: coordinates must lie within ±2**(_BITS-1) voxels (±52 m at 0.1 mm).
-_BITS = 20
+#: Bits per packed spatial coordinate: coordinates must lie within ±2**(_BITS-1) voxels (±13 m at 0.1 mm).
+_BITS = 18
 _HALF = 1 << (_BITS - 1)
 #: Margin kept free at the edges of the range so that neighbour offsets never wrap around.
 _MARGIN = 64

@@ -3,7 +3,9 @@
 ``train_fcgf(hoard, out, TrainOptions(epochs=380))`` runs SGD (lr 0.1, momentum 0.8, weight decay 1e-4,
 lr x 0.99 after each epoch) on the contrastive loss with hardest negatives, one augmented pair of faces of
 one die at a time. ``TrainOptions(model=DIPConfig())`` trains DIP the same way, on patches around the
-true matches (:mod:`coindie.learned.learners`). After each epoch it measures, on held-out pairs (whole
+true matches (:mod:`coindie.learned.learners`). An FCGF model that levels its input gets levelled pairs,
+and one that searches ``spins`` turns when matching gets pairs turned apart by at most ±180°/spins
+(:meth:`coindie.learned.pairs.PairSet.make`). After each epoch it measures, on held-out pairs (whole
 dies, turned like the benchmark turns them, never scaled), the loss and the feature-match recall, and
 writes into ``out``:
 
@@ -31,12 +33,22 @@ from typing import Any
 import numpy as np
 import torch
 
+from coindie.bench.truth import hoard_recipe
 from coindie.errors import ParameterError
 from coindie.learned.dip import DIPConfig
 from coindie.learned.fcgf import FCGFConfig, config_path, count_parameters, torch_threads
 from coindie.learned.learners import Learner, ModelConfig, learner_for
 from coindie.learned.losses import ContrastiveLoss
-from coindie.learned.pairs import TRAINING, VALIDATION, PairSet, TrainingPair, crop, split_pairs
+from coindie.learned.pairs import (
+    TRAINING,
+    VALIDATION,
+    Augmentation,
+    PairSet,
+    TrainingPair,
+    crop,
+    level_pair,
+    split_pairs,
+)
 from coindie.registration.features import MutualNN
 from coindie.registration.geometry import transform_points
 
@@ -224,10 +236,23 @@ def _train_epoch(
 
 def _training_pair(train_set: PairSet, index: int, options: TrainOptions, epoch: int) -> TrainingPair:
     """Training pair ``index`` of ``epoch``, augmented, cropped when the options say so."""
-    pair = train_set.make(index, [options.seed, epoch, index], TRAINING)
+    pair = _pair(train_set, index, [options.seed, epoch, index], TRAINING, options)
     if options.crop_radius:
         pair = crop(pair, options.crop_radius, np.random.default_rng([options.seed, epoch, index, 1]))
     return pair
+
+
+def _pair(
+    pairs: PairSet, index: int, seed: list[int], augmentation: Augmentation, options: TrainOptions
+) -> TrainingPair:
+    """A pair as the model sees it: turned alike within the model's tolerance when it searches turns,
+    levelled when it levels its input (whole faces, before any crop)."""
+    config = options.model
+    if not isinstance(config, FCGFConfig):
+        return pairs.make(index, seed, augmentation)
+    tolerance = config.turn_tolerance_deg if config.spins > 1 else None
+    pair = pairs.make(index, seed, augmentation, turn_tolerance_deg=tolerance)
+    return level_pair(pair) if config.level else pair
 
 
 def _means(terms: list[dict[str, float]]) -> dict[str, float]:
@@ -247,7 +272,7 @@ def _validate(
     losses, ratios, seconds = [], [], []
     with torch.no_grad():
         for index in range(len(val_set)):
-            pair = val_set.make(index, [options.seed, _VALIDATION_SEED, index], VALIDATION)
+            pair = _pair(val_set, index, [options.seed, _VALIDATION_SEED, index], VALIDATION, options)
             generator = torch.Generator().manual_seed(options.seed + index)
             rng = np.random.default_rng([options.seed, len(pair.source), len(pair.target)])
             at = (
@@ -331,7 +356,12 @@ def _save(
     (out / LOG).write_text(json.dumps(log, indent=1) + "\n")
     plot_curves(log, out / CURVES)
     if _best_epoch(log) == log[-1]["epoch"]:
-        info = {"epoch": log[-1]["epoch"], "val": _without_lists(log[-1]["val"]), "data": str(data)}
+        info = {
+            "epoch": log[-1]["epoch"],
+            "val": _without_lists(log[-1]["val"]),
+            "data": str(data),
+            "hoard": hoard_recipe(Path(data)),
+        }
         options.learner.save(
             model,
             str(out / options.model_file),

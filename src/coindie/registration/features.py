@@ -119,7 +119,7 @@ class FeatureRegistration:
     def estimate(self, source: Cloud, target: Cloud, timer: Timer) -> Estimate:
         with timer("features"):
             source_support, source_at, source_descriptors = self._describe(source)
-            target_support, target_at, target_descriptors = self._describe(target)
+            target_support, target_at, target_descriptors = self._describe_target(target)
         with timer("matching"):
             pairs = self.matcher.match(source_descriptors, target_descriptors)
             matches = Matches(
@@ -136,3 +136,8 @@ class FeatureRegistration:
         support = self.features.support(cloud)
         at = self.matcher.sample(support)
         return support, at, self.features.describe(support, at)
+
+    def _describe_target(self, cloud: Cloud) -> tuple[Cloud, IntArray, FloatArray]:
+        """The target's support, the support point of each descriptor row, the descriptors (a subclass
+        may give a point several rows)."""
+        return self._describe(cloud)

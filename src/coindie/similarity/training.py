@@ -15,14 +15,13 @@ pairs whose registration is valid (an invalid registration scores 0 without the 
 from __future__ import annotations
 
 import itertools
-import json
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
-from coindie.bench.truth import FaceTruth, HoardTruth
+from coindie.bench.truth import FaceTruth, HoardTruth, hoard_recipe
 from coindie.errors import ParameterError
 from coindie.similarity.batch import BatchConfig, PairTask, measure_pairs
 from coindie.similarity.classifier import SameDieClassifier
@@ -176,20 +175,10 @@ def train_similarity(
     fitted = fit_classifier(scores, pairs, classifier, seed=seed)
     fitted.metadata.update(
         {
-            "trained_on": str(truth.root), "hoard": _hoard_recipe(truth.root), "split": split,
+            "trained_on": str(truth.root), "hoard": hoard_recipe(truth.root), "split": split,
             "method": config.method, "seed": seed,
             "families": list(families), "negatives_per_positive": negatives, "max_faces": max_faces,
             "max_pairs": max_pairs,
         }
     )  # fmt: skip
     return fitted
-
-
-def _hoard_recipe(root: Path) -> dict[str, object]:
-    """The generator settings of a synthetic hoard (preset, scale, seed: enough to make it again), or
-    nothing for a folder of real scans; the folder's path alone names a place on one machine only."""
-    try:
-        document = json.loads((Path(root) / "hoard.json").read_text())
-    except (OSError, ValueError):
-        return {}
-    return {key: document[key] for key in ("preset", "scale", "seed", "coindie_version") if key in document}
