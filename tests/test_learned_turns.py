@@ -157,3 +157,35 @@ def test_the_shipped_weights_are_small_and_say_how_they_were_trained() -> None:
     assert header["info"]["hoard"]["preset"] == "riedones"
     assert "coindie train fcgf" in header["info"]["command"]
     assert header["info"]["val"]["fmr"] > 0.5  # the best epoch matched most held-out pairs
+
+
+def _inlier_ratio(tilt_turn_deg: float, view: int | None) -> float:
+    """Mutual matches between the shipped FCGF's descriptors of a face and of a copy of it tilted by
+    (15°, -10°), turned by ``tilt_turn_deg`` about its axis and moved (``view``: that view of the copy);
+    the share within 0.3 mm of the truth."""
+    from coindie.learned.fcgf import FCGFDescriptor
+
+    pair = make_coin_pair(seed=5, radius=6.0, T_target_source=np.eye(4))
+    face = Cloud(pair.target.points, pair.target.normals)
+    T = rigid_transform((15.0, -10.0, tilt_turn_deg), (2.0, -1.0, 0.5))
+    copy = Cloud(transform_points(T, face.points), face.normals @ T[:3, :3].T)
+    descriptor, rng = FCGFDescriptor(), np.random.default_rng(0)
+    rows = []
+    for support in (descriptor.support(face), descriptor.support(copy)):
+        rows.append((support, np.sort(rng.choice(len(support.points), 2000, replace=False))))
+    (face_support, face_at), (copy_support, copy_at) = rows
+    f_face = descriptor.describe(face_support, face_at)
+    f_copy = (
+        descriptor.describe(copy_support, copy_at)
+        if view is None
+        else descriptor.describe_views(copy_support, copy_at)[view]
+    )
+    matches = MutualNN().match(f_face, f_copy)
+    moved = transform_points(T, face_support.points[face_at[matches[:, 0]]])
+    return float(np.mean(np.linalg.norm(moved - copy_support.points[copy_at[matches[:, 1]]], axis=1) < 0.3))
+
+
+def test_the_shipped_fcgf_ignores_tilts_and_small_turns_and_its_views_cover_the_rest() -> None:
+    assert _inlier_ratio(8.0, None) > 0.5  # tilted and turned within the tolerance (±11.25°)
+    assert _inlier_ratio(90.0, None) < 0.1  # a quarter turn: not invariant by itself...
+    assert _inlier_ratio(90.0, 12) > 0.5  # ...but its view turned by 270° sees the face as it was
