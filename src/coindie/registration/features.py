@@ -18,9 +18,6 @@ from coindie.registration.geometry import Cloud, FloatArray, IntArray, content_r
 from coindie.registration.params import Configurable, param
 from coindie.scan import Scan
 
-#: Query rows per block of the brute-force descriptor search (bounds memory to block x n floats).
-_BLOCK = 1024
-
 
 class FeatureExtractor(Protocol):
     """Computes one descriptor per point of a support cloud."""
@@ -97,15 +94,20 @@ class MutualNN(Configurable):
 def nearest_rows(queries: FloatArray, reference: FloatArray) -> IntArray:
     """Index of the nearest ``reference`` row (Euclidean) for each query row.
 
-    Brute force by blocks of matrix products: in descriptor spaces of 32 dimensions and more, a k-d tree
-    is slower (3x on 5000 FPFH-sized rows) and the cost here is bounded by ``n_points``.
+    Exact search with faiss (a flat L2 index, float32): on 5000 FCGF descriptors against the 16 x 5000 of
+    a target's views it is 16x faster than numpy's blocked matrix products (0.31 s against 4.8 s, one
+    thread) and finds the same rows but for exact ties. A k-d tree is slower still in 32 dimensions.
     """
-    squared = (reference**2).sum(axis=1)
-    blocks = [
-        np.argmin(squared[None, :] - 2.0 * queries[start : start + _BLOCK] @ reference.T, axis=1)
-        for start in range(0, len(queries), _BLOCK)
-    ]
-    return np.concatenate(blocks) if blocks else np.zeros(0, dtype=np.int64)
+    import faiss
+
+    if len(queries) == 0:
+        return np.zeros(0, dtype=np.int64)
+    if len(reference) == 0:
+        raise ValueError("nearest_rows: no reference rows to search")
+    index = faiss.IndexFlatL2(reference.shape[1])
+    index.add(np.ascontiguousarray(reference, dtype=np.float32))
+    _, rows = index.search(np.ascontiguousarray(queries, dtype=np.float32), 1)
+    return rows[:, 0].astype(np.int64)
 
 
 @dataclass(frozen=True)
