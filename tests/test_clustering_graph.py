@@ -17,9 +17,9 @@ from coindie.clustering import (
     write_clusters,
     write_graph,
 )
+from real_data import RIEDONES3D
 
-REAL_DIR = Path(__file__).resolve().parents[1] / ".." / "shared" / "data" / "riedones3d"
-BEARD = REAL_DIR / "beard_probability_graph.json"
+BEARD = RIEDONES3D / "beard_probability_graph.json"
 
 
 @pytest.fixture(scope="module")

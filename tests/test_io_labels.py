@@ -9,8 +9,7 @@ import pytest
 from coindie.errors import LabelsError, ParameterError
 from coindie.ids import parse_face_id
 from coindie.io import Labels, read_labels, write_labels
-
-RIEDONES3D = Path(__file__).parents[2] / "shared" / "data" / "riedones3d"
+from real_data import RIEDONES3D
 
 
 def write_text(path: Path, text: str) -> Path:

@@ -19,7 +19,6 @@ import pytest
 from coindie.project import init_project, open_project
 from coindie.project.run import RunConfig, run_project, tile_batches
 
-SHARED_SCALER = Path("/work/shared/data/riedones3d/histogram_scaler.json")
 #: What a result is, apart from its timings: every stored figure of a pair.
 RESULT_FIELDS = ("source", "target", "side", "origin", "status", "method", "valid", "reason", "probability")
 
@@ -39,26 +38,11 @@ def hoard(tmp_path_factory) -> Path:
 
 @pytest.fixture(scope="module")
 def classifier(tmp_path_factory) -> str:
-    """The shipped model when there is one; otherwise one fitted on the paper's real mean histogram
-    (same die: near it; different dies: the same mass pushed to larger distances)."""
+    """The shipped same-die model, saved as a model file."""
     from coindie.similarity import SameDieClassifier
 
     path = tmp_path_factory.mktemp("model") / "classifier.json"
-    try:
-        SameDieClassifier.load_default().save(path)
-        return str(path)
-    except (OSError, ValueError):
-        pass
-    import json
-
-    mean = np.asarray(json.loads(SHARED_SCALER.read_text())["mean"], dtype=np.float64)
-    rng = np.random.default_rng(0)
-    same = mean * rng.uniform(0.8, 1.2, size=(60, mean.size))
-    other = np.roll(mean, 12) * rng.uniform(0.8, 1.2, size=(60, mean.size))
-    model = SameDieClassifier.from_paper_scaler(SHARED_SCALER).fit(
-        np.vstack([same, other]), np.r_[np.ones(60, bool), np.zeros(60, bool)]
-    )
-    model.save(path)
+    SameDieClassifier.load_default().save(path)
     return str(path)
 
 

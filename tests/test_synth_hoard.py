@@ -9,7 +9,6 @@ from __future__ import annotations
 import filecmp
 import json
 from collections import Counter, defaultdict
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -35,8 +34,8 @@ from coindie.synth.presets import (
     real_die_sizes,
 )
 from coindie.synth.writer import HOARD_FILE, read_splits, read_truth, true_transform
+from real_data import RIEDONES3D
 
-REAL_DIR = Path(__file__).resolve().parents[1] / ".." / "shared" / "data" / "riedones3d"
 CLUSTER_SPLITS = (CLUSTER_TRAIN, CLUSTER_VAL, CLUSTER_TEST)
 
 
@@ -178,10 +177,10 @@ def test_bad_presets_are_refused():
         DieGroup(OBVERSE, 1, 3, ("holdout",))
 
 
-@pytest.mark.skipif(not REAL_DIR.is_dir(), reason="the real facts are not next to the repository")
+@pytest.mark.skipif(not RIEDONES3D.is_dir(), reason="the real facts are not next to the repository")
 def test_embedded_real_die_sizes_are_the_experts_files():
     for family, name in ((OBVERSE, "experts_obverse_dies.csv"), (REVERSE, "experts_reverse_dies.csv")):
-        labels = read_labels(REAL_DIR / name)
+        labels = read_labels(RIEDONES3D / name)
         assert sorted(Counter(labels.values()).values(), reverse=True) == real_die_sizes(family)
 
 
@@ -323,12 +322,12 @@ def test_c2c_histogram_finds_a_known_offset(tiny_hoards):
     assert histogram_distances(itself, lifted)["wasserstein_mm"] > 0.2
 
 
-@pytest.mark.skipif(not REAL_DIR.is_dir(), reason="the real facts are not next to the repository")
+@pytest.mark.skipif(not RIEDONES3D.is_dir(), reason="the real facts are not next to the repository")
 def test_real_mean_histogram_is_read_as_a_unit_density():
     from coindie.synth.calibration import bin_centres, histogram_mode, real_link_stats, real_mean_histogram
 
-    real = real_mean_histogram(REAL_DIR)
+    real = real_mean_histogram(RIEDONES3D)
     assert real.shape == (70,) and np.sum(real) * (bin_centres()[1] - bin_centres()[0]) == pytest.approx(1.0)
     assert 0.025 <= histogram_mode(real) <= 0.05
-    stats = real_link_stats(REAL_DIR)
+    stats = real_link_stats(RIEDONES3D)
     assert (stats.coins_with_both, stats.combinations, stats.max_reverse_per_obverse) == (881, 326, 29)
