@@ -18,9 +18,10 @@ import sys
 import time
 from dataclasses import replace
 from functools import lru_cache
-from pathlib import Path
 
 import numpy as np
+
+from coindie.bench.clustering import rerun_arguments
 
 VARIANTS = {
     "paper's text (source 0.1, target 0.05 mm, one way)": {},
@@ -33,12 +34,8 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(
         description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
     )
-    parser.add_argument("bench", type=Path)
-    parser.add_argument("--hoard", type=Path, required=True)
-    parser.add_argument("--train-pairs", type=Path, required=True)
-    parser.add_argument("--max-faces", type=int, default=None)
+    rerun_arguments(parser)
     parser.add_argument("--groups", default="R")
-    parser.add_argument("--out", type=Path, default=None)
     args = parser.parse_args(argv)
     out = args.out or args.bench
 

@@ -21,6 +21,8 @@ from pathlib import Path
 
 import numpy as np
 
+from coindie.bench.clustering import rerun_arguments
+
 PAPER_SCALER = (
     Path(__file__).resolve().parents[1] / ".." / "shared" / "data" / "riedones3d" / "histogram_scaler.json"
 )
@@ -30,11 +32,7 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(
         description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
     )
-    parser.add_argument("bench", type=Path)
-    parser.add_argument("--hoard", type=Path, required=True)
-    parser.add_argument("--train-pairs", type=Path, required=True)
-    parser.add_argument("--out", type=Path, default=None)
-    parser.add_argument("--max-faces", type=int, default=None, help="as given to coindie bench clustering")
+    rerun_arguments(parser)
     parser.add_argument("--seed", type=int, default=0)
     args = parser.parse_args(argv)
     out = args.out or args.bench

@@ -23,6 +23,7 @@ Outputs in ``out``: ``pairs.csv`` (every measured pair, resumable), ``model.json
 
 from __future__ import annotations
 
+import argparse
 import itertools
 import json
 from collections.abc import Callable
@@ -107,6 +108,20 @@ def benchmark_clustering(
     _write_clusters(graphs, summary, out)
     _plot(graphs, faces, summary, out / "fmi_vs_threshold.png")
     return summary
+
+
+def rerun_arguments(parser: argparse.ArgumentParser) -> None:
+    """The command line shared by the scripts that re-analyse a run of this benchmark without registering
+    again (``benchmarks/bench_clustering_*.py``): its output folder, the hoard, the training pairs written
+    by ``coindie train similarity``, the face limit the run was given, and where to write (default: the
+    run's folder)."""
+    parser.add_argument("bench", type=Path, help="the folder coindie bench clustering wrote")
+    parser.add_argument("--hoard", type=Path, required=True)
+    parser.add_argument(
+        "--train-pairs", type=Path, required=True, help="MODEL.pairs.csv of coindie train similarity"
+    )
+    parser.add_argument("--max-faces", type=int, default=None, help="as given to coindie bench clustering")
+    parser.add_argument("--out", type=Path, default=None, help="output folder (default: BENCH)")
 
 
 def chosen_faces(
