@@ -13,6 +13,8 @@ from coindie.io import read_scan
 from coindie.registration import get_method
 from coindie.similarity import PairScore, SameDieClassifier, score_pair
 from coindie.similarity.batch import BatchConfig, PairTask, measure_pairs, read_scores, tiles
+from coindie.similarity.relief_classifier import ReliefClassifier
+from coindie.similarity.scorers import load_scorer
 from coindie.similarity.training import fit_classifier, labelled_pairs
 
 
@@ -133,8 +135,13 @@ def test_train_similarity_command_writes_a_loadable_model(hoard: Path, tmp_path:
     ]
     result = CliRunner().invoke(app, args)
     assert result.exit_code == 0, result.output
-    model = SameDieClassifier.load(out)
+    model = load_scorer(out)
+    assert isinstance(model, ReliefClassifier) and model.NAME == "relief"
     assert model.metadata["split"] == "cluster_test" and model.metadata["method"] == "relief"
     assert (tmp_path / "model.pairs.csv").is_file()
+    # the paper's scorer from the same measured pairs (the CSV is resumed: nothing is registered again)
+    paper = CliRunner().invoke(app, [*args, "--scorer", "paper", "--work", str(tmp_path / "model.pairs.csv")])
+    assert paper.exit_code == 0, paper.output
+    assert SameDieClassifier.load(out).NAME == "paper"
     bad = CliRunner().invoke(app, [*args[:5], "--method", "nope"])
     assert bad.exit_code == 2 and "unknown method" in bad.output

@@ -27,7 +27,12 @@ def cluster_command(
         float | None, typer.Option(help="Links with a probability above it count (paper: 0.95).")
     ] = None,
     auto: Annotated[
-        bool, typer.Option("--auto", help="Choose the threshold without labels (best silhouette on 1 - p).")
+        bool,
+        typer.Option(
+            "--auto",
+            help="Choose the threshold without labels: a project's own score populations, else the best "
+            "silhouette on 1 - p.",
+        ),
     ] = False,
     method: Annotated[str, typer.Option(help="components (the paper's), average or leiden.")] = "components",
     as_json: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
@@ -38,7 +43,10 @@ def cluster_command(
     if threshold is not None and auto:
         raise ParameterError("give --threshold or --auto, not both")
     graph = _graph(source)
-    if auto:
+    mixture = _mixture_threshold(source) if auto else None
+    if mixture is not None:
+        tau, how = mixture, "from the hoard's two score populations (calibrated probabilities)"
+    elif auto:
         choice = select_threshold_unsupervised(graph, method)
         tau, how = choice.threshold, f"chosen by silhouette {choice.score:.3f}"
     else:
@@ -56,6 +64,16 @@ def cluster_command(
         f"{out}: {graph.n_nodes} faces in {clusters.n_clusters} clusters ({method}, threshold {tau:g}, "
         f"{how}); largest {', '.join(map(str, sizes[:8]))}"
     )
+
+
+def _mixture_threshold(source: Path) -> float | None:
+    """A project's τ from its per-hoard calibration (None for a bare graph, or scores that do not
+    separate: then the silhouette chooses)."""
+    if not source.is_dir():
+        return None
+    from coindie.project import open_project
+
+    return open_project(source).mixture_threshold()
 
 
 def _graph(source: Path):  # noqa: ANN202

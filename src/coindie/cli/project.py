@@ -49,8 +49,12 @@ def run(
         int | None, typer.Option(help="Score only each face's K nearest faces by descriptor.")
     ] = None,
     classifier: Annotated[
-        Path | None, typer.Option(help="Same-die classifier JSON (default: the shipped model).")
+        Path | None, typer.Option(help="Same-die classifier JSON (default: the shipped model of --scorer).")
     ] = None,
+    scorer: Annotated[
+        str,
+        typer.Option(help="relief (scale-free relief features) or paper (the paper's distance histogram)."),
+    ] = "relief",
     batch_faces: Annotated[int, typer.Option(help="Faces per side of a batch's tile.")] = 16,
     retry_failed: Annotated[bool, typer.Option(help="Score again the pairs that failed before.")] = False,
     max_minutes: Annotated[
@@ -77,6 +81,7 @@ def run(
         dask=dask,
         batch_faces=batch_faces,
         classifier=str(classifier) if classifier else None,
+        scorer=scorer,
         retry_failed=retry_failed,
         plan_only=plan_only,
         max_seconds=None if max_minutes is None else 60.0 * max_minutes,
@@ -90,6 +95,10 @@ def run(
     )
     if report.stopped_early:
         typer.echo(f"stopped after --max-minutes {max_minutes:g}; `coindie run {project}` goes on from here")
+    from coindie.project.status import separation_lines
+
+    for line in separation_lines(open_project(project)):
+        typer.echo(line)
 
 
 @app.command("status")

@@ -15,8 +15,15 @@ from coindie.errors import ParameterError
 @train.command("similarity")
 @exits_cleanly
 def similarity(
-    data: Annotated[Path, typer.Argument(help="Hoard folder: scans, labels.csv, splits.csv.")],
+    data: Annotated[
+        list[Path],
+        typer.Argument(help="Hoard folder(s): scans, labels.csv, splits.csv; several train one model."),
+    ],
     out: Annotated[Path, typer.Option("--out", help="The model file to write (JSON).")],
+    scorer: Annotated[
+        str,
+        typer.Option(help="relief (scale-free relief features, the default) or paper (distance histogram)."),
+    ] = "relief",
     split: Annotated[str, typer.Option(help="Split whose labelled pairs train the model.")] = "cluster_train",
     method: Annotated[str, typer.Option(help="Registration method (coindie methods).")] = "relief",
     max_pairs: Annotated[int, typer.Option(help="Training pairs in all (0: every same-die pair).")] = 2000,
@@ -36,14 +43,23 @@ def similarity(
     workers: Annotated[int, typer.Option(help="Worker processes.")] = 1,
     seed: Annotated[int, typer.Option(help="Seed of the pair sample and the calibration folds.")] = 0,
 ) -> None:
-    """Register labelled pairs, histogram their distances, fit the calibrated logistic regression."""
+    """Register labelled pairs, measure them (relief features and distance histogram), fit the calibrated
+    logistic regression of the chosen scorer."""
     from coindie.bench.truth import load_truth
     from coindie.cli.progress import counting_progress
     from coindie.registration import list_methods
     from coindie.similarity import HistogramSettings, SameDieClassifier
     from coindie.similarity.batch import BatchConfig
+    from coindie.similarity.relief_classifier import ReliefClassifier
+    from coindie.similarity.scorers import SCORERS
     from coindie.similarity.training import train_similarity
 
+    if scorer not in SCORERS:
+        raise ParameterError(f"--scorer must be one of {', '.join(SCORERS)}. Got {scorer!r}.")
+    if scorer == "relief" and (paper_scaler or symmetric or authors_grids):
+        raise ParameterError(
+            "--paper-scaler, --symmetric and --authors-grids describe histograms: use --scorer paper"
+        )
     if method not in list_methods():
         raise ParameterError(f"unknown method {method!r}; known: {', '.join(list_methods())}")
     if workers < 1:
@@ -51,13 +67,15 @@ def similarity(
     settings = HistogramSettings.authors_code if authors_grids else HistogramSettings
     chosen = settings(symmetric=symmetric)
     classifier = (
-        SameDieClassifier.from_paper_scaler(paper_scaler, settings=chosen)
+        ReliefClassifier(settings=chosen)
+        if scorer == "relief"
+        else SameDieClassifier.from_paper_scaler(paper_scaler, settings=chosen)
         if paper_scaler
         else SameDieClassifier(settings=chosen)
     )
     with counting_progress("pairs") as progress:
         model = train_similarity(
-            load_truth(data), work or out.with_suffix(".pairs.csv"), split=split,
+            [load_truth(d) for d in data], work or out.with_suffix(".pairs.csv"), split=split,
             config=BatchConfig(method=method, settings=chosen), max_pairs=max_pairs or None,
             negatives=negatives, max_faces=max_faces or None, classifier=classifier, workers=workers,
             seed=seed, progress=progress,

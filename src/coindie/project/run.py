@@ -69,6 +69,7 @@ class RunConfig:
     dask: str | None = None
     batch_faces: int = DEFAULT_BATCH_FACES
     classifier: str | None = None
+    scorer: str = "relief"  # the shipped model used when no classifier file is given
     registration_grid_mm: float = 0.1
     retry_failed: bool = False
     plan_only: bool = False
@@ -83,6 +84,10 @@ class RunConfig:
             raise ProjectError(f"batch_faces must be >= 1, got {self.batch_faces}")
         if self.workers < 0:
             raise ProjectError(f"--workers must be >= 0 (0: one per core), got {self.workers}")
+        from coindie.similarity.scorers import SCORERS
+
+        if self.scorer not in SCORERS:
+            raise ProjectError(f"unknown scorer {self.scorer!r}; known: {', '.join(SCORERS)}")
 
 
 @dataclass
@@ -115,6 +120,7 @@ class _Scorer:
 
     config_text: str
     params_hash: str
+    populations: str  # JSON: the scorer's training populations, where the per-hoard calibration starts
 
 
 def run_project(
@@ -131,6 +137,7 @@ def run_project(
     for skipped in refreshed.skipped:
         echo(f"skipped: {skipped}")
     run_id = _start_run(project, config, scorer.params_hash)
+    project.set_meta(f"populations:{scorer.params_hash}", scorer.populations)
     backend = make_backend(config.workers, config.dask)
     report = RunReport(run_id, backend.description)
     echo(f"run {run_id} on {backend.description}")
@@ -176,7 +183,7 @@ def _scorer(config: RunConfig) -> _Scorer:
     from coindie.registration import get_method
 
     registrar = get_method(config.method, **config.method_params)
-    classifier = _classifier(config.classifier)
+    classifier = _classifier(config)
     classifier_dict = classifier.to_dict()
     payload = {
         "method": config.method,
@@ -193,18 +200,19 @@ def _scorer(config: RunConfig) -> _Scorer:
         "faces": face_params_hash(_cache_grid(classifier), config.registration_grid_mm),
     }
     digest = hashlib.sha256(json.dumps(identity, sort_keys=True, default=str).encode()).hexdigest()[:16]
-    return _Scorer(json.dumps(payload, sort_keys=True), digest)
+    populations = json.dumps(getattr(classifier, "populations", {}) or {})
+    return _Scorer(json.dumps(payload, sort_keys=True), digest, populations)
 
 
-def _classifier(path: str | None) -> Any:
-    from coindie.similarity import SameDieClassifier
+def _classifier(config: RunConfig) -> Any:
+    from coindie.similarity.scorers import default_scorer, load_scorer
 
     try:
-        return SameDieClassifier.load(path) if path else SameDieClassifier.load_default()
+        return load_scorer(config.classifier) if config.classifier else default_scorer(config.scorer)
     except CoinDieError:
         raise
     except (OSError, ValueError) as error:
-        where = path or "the shipped model"
+        where = config.classifier or f"the shipped {config.scorer} model"
         raise ProjectError(f"cannot load the same-die classifier ({where}): {error}") from None
 
 
@@ -270,7 +278,7 @@ def _end_run(project: Project, run_id: int, status: str, message: str) -> None:
 def _prepare_faces(
     project: Project, config: RunConfig, backend: Backend, report: RunReport, progress: Progress, echo: Echo
 ) -> None:
-    classifier = _classifier(config.classifier)
+    classifier = _classifier(config)
     grid = _cache_grid(classifier)
     params = face_params_hash(grid, config.registration_grid_mm)
     tasks = []
@@ -387,7 +395,7 @@ def _plan_line(plan: SidePlan, config: RunConfig) -> str:
 
 
 def _face_params(project: Project, config: RunConfig) -> str:
-    return face_params_hash(_cache_grid(_classifier(config.classifier)), config.registration_grid_mm)
+    return face_params_hash(_cache_grid(_classifier(config)), config.registration_grid_mm)
 
 
 def _count(project: Project, params_hash: str, side: str) -> int:
@@ -501,7 +509,7 @@ def _commit(project: Project, params_hash: str, run_id: int, rows: list[dict[str
     with project.transaction() as db:
         db.executemany(
             "UPDATE pairs SET status = ?, method = ?, valid = ?, reason = ?, probability = ?, residual = ?, "
-            "T_target_source = ?, histogram = ?, timings = ?, run_id = ?, done_at = ? "
+            "T_target_source = ?, histogram = ?, features = ?, timings = ?, run_id = ?, done_at = ? "
             "WHERE source = ? AND target = ? AND params_hash = ? AND status != 'done'",
             [
                 (
@@ -513,6 +521,7 @@ def _commit(project: Project, params_hash: str, run_id: int, rows: list[dict[str
                     r.get("residual"),
                     r.get("T_target_source"),
                     r.get("histogram"),
+                    r.get("features"),
                     r.get("timings"),
                     run_id,
                     stamp,

@@ -56,6 +56,7 @@ CREATE TABLE IF NOT EXISTS pairs (
     residual REAL,
     T_target_source TEXT,
     histogram BLOB,
+    features BLOB,
     timings TEXT,
     planned_run INTEGER,
     run_id INTEGER,

@@ -18,6 +18,7 @@ class ProjectStatus:
     eta_seconds: float | None
     face_errors: list[str] = field(default_factory=list)
     pair_errors: list[str] = field(default_factory=list)
+    separation: list[str] = field(default_factory=list)  # per side: do the scores separate (words, numbers)
 
     def to_dict(self) -> dict[str, Any]:
         return asdict(self)
@@ -41,6 +42,7 @@ class ProjectStatus:
             lines.append(f"rate {self.pairs_per_second:.2f} pairs/s")
         if self.eta_seconds is not None:
             lines.append(f"ETA {_duration(self.eta_seconds)} for the remaining pairs at that rate")
+        lines += self.separation
         lines += [f"bad scan: {error}" for error in self.face_errors]
         lines += [f"failed pair: {error}" for error in self.pair_errors]
         return "\n".join(lines)
@@ -78,8 +80,32 @@ def project_status(project: Project, max_errors: int = 50) -> ProjectStatus:
         )
     ]
     return ProjectStatus(
-        str(project.folder), faces, pairs, last_run, rate, eta, face_errors[:max_errors], pair_errors
-    )
+        str(project.folder), faces, pairs, last_run, rate, eta, face_errors[:max_errors], pair_errors,
+        separation_lines(project),
+    )  # fmt: skip
+
+
+def separation_lines(project: Project) -> list[str]:
+    """One line per side with scored pairs: how its scores split into same-die and different-die
+    populations (the per-hoard calibration), or a WARNING in words and numbers when they do not, with
+    the registrations' most common reasons for refusing pairs."""
+    params = project.current_params()
+    lines = []
+    for (side,) in project.db.execute(
+        "SELECT DISTINCT side FROM pairs WHERE params_hash = ? AND status = 'done' ORDER BY side", (params,)
+    ):
+        calibration = project.calibration(side, params)
+        if calibration.separates:
+            lines.append(f"scores of side {side}: {calibration.message}")
+            continue
+        lines.append(f"WARNING, side {side}: {calibration.message}")
+        reasons = project.db.execute(
+            "SELECT reason, COUNT(*) AS n FROM pairs WHERE params_hash = ? AND side = ? AND status = 'done' "
+            "AND valid = 0 GROUP BY reason ORDER BY n DESC LIMIT 3",
+            (params, side),
+        )
+        lines += [f"  refused {r['n']} time(s): {r['reason']}" for r in reasons]
+    return lines
 
 
 def _still_running(run: dict[str, Any]) -> bool:

@@ -23,6 +23,7 @@ import numpy as np
 from coindie.errors import CoinDieError
 from coindie.ids import FaceId, parse_face_id
 from coindie.project.schema import PRAGMAS, SCHEMA, SCHEMA_VERSION
+from coindie.similarity.calibration import MIXTURE_THRESHOLD, HoardCalibration, calibrate_hoard, log_odds
 
 if TYPE_CHECKING:
     from coindie.clustering import ProbabilityGraph
@@ -161,6 +162,10 @@ class Project:
             raise ProjectError(
                 f"{self.db_path}: project schema version {found}, this coindie reads {SCHEMA_VERSION}"
             )
+        columns = {r["name"] for r in self.db.execute("PRAGMA table_info(pairs)")}
+        if "features" not in columns:  # a project made before the relief scorer: its pairs lack features
+            with self.transaction() as db:
+                db.execute("ALTER TABLE pairs ADD COLUMN features BLOB")
 
     def meta(self, key: str, default: str | None = None) -> str | None:
         row = self.db.execute("SELECT value FROM meta WHERE key = ?", (key,)).fetchone()
@@ -302,20 +307,57 @@ class Project:
             query, args = query + " AND side = ?", (*args, side)
         return [decode_pair(r) for r in self.db.execute(query + " ORDER BY source, target", args)]
 
-    def probability_graph(self, side: str | None = None, params_hash: str | None = None) -> ProbabilityGraph:
+    def probability_graph(
+        self, side: str | None = None, params_hash: str | None = None, *, calibrated: bool = True
+    ) -> ProbabilityGraph:
         """The project's scored pairs as a :class:`coindie.clustering.ProbabilityGraph`: every usable face
         of ``side`` (``D`` or ``R``; both when None, with no link across sides) and an edge per done pair
-        weighted by its same-die probability."""
+        weighted by its same-die probability — calibrated on this hoard's own pairs, side by side
+        (:meth:`calibration`), unless ``calibrated`` is False (the scorer's own probabilities)."""
         from coindie.clustering import ProbabilityGraph
 
         faces = [s.face_id for s in self.scans("ok") if side is None or s.side == side]
         known = set(faces)
-        edges = [
-            (p["source"], p["target"], float(p["probability"] or 0.0))
-            for p in self.scored_pairs(params_hash, side)
-            if p["source"] in known and p["target"] in known
+        pairs = [
+            p for p in self.scored_pairs(params_hash, side) if p["source"] in known and p["target"] in known
         ]
+        weights = np.array([float(p["probability"] or 0.0) for p in pairs])
+        if calibrated:
+            for one_side in {p["side"] for p in pairs}:
+                on_side = np.array([p["side"] == one_side for p in pairs])
+                valid = on_side & np.array([bool(p["valid"]) for p in pairs])
+                calibration = self.calibration(one_side, params_hash)
+                weights[valid] = calibration.probability(log_odds(weights[valid]))
+        edges = [(p["source"], p["target"], float(w)) for p, w in zip(pairs, weights, strict=True)]
         return ProbabilityGraph.from_edges(edges, faces, where=str(self.folder))
+
+    def mixture_threshold(self, params_hash: str | None = None) -> float | None:
+        """τ from the hoard's own score populations (:data:`coindie.similarity.calibration.
+        MIXTURE_THRESHOLD` on the calibrated probabilities) when every side's scores separate; None when
+        some side's do not (then a threshold must come from elsewhere: labels, or the silhouette)."""
+        params_hash = params_hash or self.current_params()
+        sides = [
+            r["side"]
+            for r in self.db.execute(
+                "SELECT DISTINCT side FROM pairs WHERE params_hash = ? AND status = 'done'", (params_hash,)
+            )
+        ]
+        if sides and all(self.calibration(side, params_hash).separates for side in sides):
+            return MIXTURE_THRESHOLD
+        return None
+
+    def calibration(self, side: str, params_hash: str | None = None) -> HoardCalibration:
+        """The two populations of ``side``'s scored pairs (:func:`coindie.similarity.calibrate_hoard`),
+        EM started from the run's scorer's training populations."""
+        params_hash = params_hash or self.current_params()
+        pairs = self.scored_pairs(params_hash, side)
+        valid = [float(p["probability"] or 0.0) for p in pairs if p["valid"]]
+        prior_text = self.meta(f"populations:{params_hash}")
+        prior = {k: tuple(v) for k, v in json.loads(prior_text).items()} if prior_text else None
+        name = {"D": "obverse", "R": "reverse"}.get(side, side)
+        return calibrate_hoard(
+            valid, refused=len(pairs) - len(valid), prior=prior or None, what=f"{name} pairs"
+        )
 
 
 def decode_pair(row: sqlite3.Row) -> dict[str, Any]:
@@ -325,6 +367,8 @@ def decode_pair(row: sqlite3.Row) -> dict[str, Any]:
         pair["T_target_source"] = np.asarray(json.loads(pair["T_target_source"]), dtype=np.float64)
     if pair.get("histogram") is not None:
         pair["histogram"] = np.frombuffer(pair["histogram"], dtype=np.float32).astype(np.float64)
+    if pair.get("features") is not None:
+        pair["features"] = np.frombuffer(pair["features"], dtype=np.float32).astype(np.float64)
     if pair.get("timings"):
         pair["timings"] = json.loads(pair["timings"])
     return pair

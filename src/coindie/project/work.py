@@ -34,7 +34,7 @@ from coindie.errors import CoinDieError
 from coindie.scan import Scan
 
 #: Version of the pair function's own code (bump when a change alters results: the pairs are redone).
-PAIR_FUNCTION_VERSION = 1
+PAIR_FUNCTION_VERSION = 2
 #: Version of the per-face work (bump when a change alters the cache: faces are prepared again).
 FACE_WORK_VERSION = 1
 
@@ -171,14 +171,14 @@ class _Worker:
             return
         from coindie.registration import base as registration_base
         from coindie.registration import get_method
-        from coindie.similarity import SameDieClassifier
         from coindie.similarity import histogram as similarity_histogram
+        from coindie.similarity.scorers import scorer_from_dict
 
         config = json.loads(config_text)
         self.registrar = SampledRegistrar(
             get_method(config["method"], **config["method_params"]), config["registration_grid_mm"]
         )
-        self.classifier = SameDieClassifier.from_dict(config["classifier"], "the run's classifier")
+        self.classifier = scorer_from_dict(config["classifier"], "the run's classifier")
         # The registration and histogram modules keep a few faces' work (search trees, relief images,
         # sampled clouds) keyed by content; a batch touches up to ``cache_faces`` faces, which must all
         # stay cached for each to be prepared once per batch. Their cache sizes are read at call time.
@@ -230,6 +230,7 @@ def score_batch(batch: PairBatch) -> list[dict[str, Any]]:
                     "residual": float(score.residual) if np.isfinite(score.residual) else None,
                     "T_target_source": json.dumps(np.asarray(score.T_target_source).tolist()),
                     "histogram": np.asarray(score.histogram, dtype=np.float32).tobytes(),
+                    "features": np.asarray(score.features, dtype=np.float32).tobytes(),
                     # wall seconds per stage, and the CPU seconds of the whole pair (face loading included),
                     # which do not depend on how loaded the machine is
                     "timings": json.dumps({**score.timings, "cpu": time.process_time() - cpu}),

@@ -263,6 +263,25 @@ def align_reliefs(
     )
 
 
+def pose_score(
+    source: ReliefImage, target: ReliefImage, angle_rad: float, shift_mm: tuple[float, float]
+) -> float:
+    """Masked NCC of the source relief moved by (``angle_rad``, ``shift_mm``) against the target, over
+    both footprints: the score :func:`align_reliefs` maximises, at any pose (sub-pixel shifts by linear
+    interpolation). -1 without overlap. A dimensionless judge of a refined pose."""
+    offset = (shift_mm[1] / source.pixel_mm, shift_mm[0] / source.pixel_mm)  # (rows, cols)
+    moving = ndimage.shift(rotate_image(source.detail, angle_rad), offset, order=1, mode="constant")
+    turned_mask = rotate_image(source.mask.astype(np.float64), angle_rad)
+    moving_mask = ndimage.shift(turned_mask, offset, order=1, mode="constant") > 0.5
+    both = moving_mask & target.mask
+    if int(both.sum()) < 3:
+        return -1.0
+    f, m = target.detail[both], moving[both]
+    f, m = f - f.mean(), m - m.mean()
+    denominator = float(np.sqrt((f @ f) * (m @ m)))
+    return float(f @ m) / denominator if denominator > 0 else -1.0
+
+
 def _correlate(
     source: ReliefImage, target: ReliefImage, angle: float, step: int, min_overlap: float
 ) -> tuple[float, tuple[float, float]]:

@@ -30,7 +30,7 @@ from coindie.registration.base import Estimate, Timer, register_method
 from coindie.registration.geometry import BoolArray, Cloud, FloatArray, IntArray, transform_points
 from coindie.registration.icp import MIN_CORRESPONDENCES, IcpOutcome, point_to_plane_icp
 from coindie.registration.params import Configurable, param
-from coindie.registration.planar import ReliefImage, align_reliefs
+from coindie.registration.planar import ReliefImage, align_reliefs, pose_score
 from coindie.registration.projective import ProjectedCloud
 from coindie.scan import Scan
 
@@ -65,6 +65,12 @@ class ReliefSearch(Configurable):
         6000, low=100, doc="points (a regular subsample) that fit the canonical frame's plane and quadric"
     )
     icp_points: int = param(2000, low=100, doc="relief points of the source used by the ICP")
+    icp_tolerance: float = param(
+        0.02,
+        low=0,
+        high=2,
+        doc="the ICP's pose is kept unless it lowers the relief images' correlation by more than this",
+    )
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -187,7 +193,25 @@ class ReliefRegistration:
         if outcome.n_correspondences < MIN_CORRESPONDENCES:
             failure = f"ICP found {outcome.n_correspondences} point pairs after the planar alignment"
             return Estimate(T_init, outcome.n_correspondences, failure=failure, notes=notes)
+        with timer("pose check"):
+            kept = self._agreement(outcome.T_target_source, prepared_source, prepared_target)
+            start = self._agreement(T_init, prepared_source, prepared_target)
+        if kept < start - self.search.icp_tolerance:
+            # The ICP slid away from the die pattern (a cupping or bend difference pulls a rigid fit of
+            # the whole surface off the design): the planar pose aligns the reliefs better.
+            notes = (
+                *notes,
+                f"ICP pose refused: relief agreement {kept:.3f} < {start:.3f} at the planar pose",
+            )
+            return Estimate(T_init, len(sample), outcome.n_correspondences, notes=notes)
         return Estimate(outcome.T_target_source, len(sample), outcome.n_correspondences, notes=notes)
+
+    @staticmethod
+    def _agreement(T_target_source: FloatArray, source: PreparedFace, target: PreparedFace) -> float:
+        """The relief images' masked NCC at a 3-D pose, through both canonical frames (tilt ignored)."""
+        T = target.frame.T_canonical_scan @ T_target_source @ np.linalg.inv(source.frame.T_canonical_scan)
+        angle = float(np.arctan2(T[1, 0], T[0, 0]))
+        return pose_score(source.image, target.image, angle, (float(T[0, 3]), float(T[1, 3])))
 
     def prepare(self, cloud: Cloud) -> PreparedFace:
         """Steps 1–3 for one face, from the cache when this exact cloud was seen."""

@@ -25,13 +25,14 @@ import numpy as np
 from coindie.errors import CoinDieError
 from coindie.scan import Scan
 from coindie.similarity.histogram import HistogramSettings
+from coindie.similarity.relief_features import FEATURE_NAMES, ReliefFeatureSettings
 from coindie.similarity.score import PairScore
 
 #: Faces per block of a tile: a tile's pairs touch at most twice this many faces, within the caches.
 BLOCK_FACES = 12
 FIELDS = (
     "source", "target", "method", "valid", "reason", "residual", "register_s", "histogram_s", "total_s",
-    "T_target_source", "histogram",
+    "T_target_source", "histogram", "features",
 )  # fmt: skip
 
 
@@ -52,6 +53,7 @@ class BatchConfig:
     method: str = "relief"
     params: tuple[tuple[str, Any], ...] = ()
     settings: HistogramSettings = HistogramSettings()
+    features: ReliefFeatureSettings = ReliefFeatureSettings()
 
 
 def tiles(tasks: Sequence[PairTask], block: int = BLOCK_FACES) -> list[list[PairTask]]:
@@ -104,7 +106,9 @@ def measure_tile(tile: list[PairTask], config: BatchConfig) -> list[PairScore]:
     rows = []
     for task in tile:
         try:
-            score = measure_pair(_scan(task.source_path), _scan(task.target_path), registrar, config.settings)
+            score = measure_pair(
+                _scan(task.source_path), _scan(task.target_path), registrar, config.settings, config.features
+            )
         except (CoinDieError, OSError, ValueError, np.linalg.LinAlgError) as error:
             # One bad scan or pair: recorded and skipped, the batch goes on.
             score = _failed(task, config, f"{type(error).__name__}: {error}")
@@ -121,7 +125,7 @@ def _named(score: PairScore, task: PairTask) -> PairScore:
 def _failed(task: PairTask, config: BatchConfig, reason: str) -> PairScore:
     return PairScore(
         np.eye(4), False, reason.splitlines()[0] if reason else "failed", np.zeros(config.settings.bins), 0.0,
-        {}, task.source, task.target, config.method,
+        {}, task.source, task.target, config.method, features=np.zeros(len(FEATURE_NAMES)),
     )  # fmt: skip
 
 
@@ -163,6 +167,7 @@ def _row(score: PairScore) -> dict[str, object]:
         "total_s": f"{t.get('total', 0.0):.4f}",
         "T_target_source": " ".join(repr(float(v)) for v in np.ravel(score.T_target_source)),
         "histogram": " ".join(f"{v:.6g}" for v in score.histogram),
+        "features": " ".join(f"{v:.6g}" for v in score.features),
     }  # fmt: skip
 
 
@@ -179,6 +184,7 @@ def _score(row: dict[str, str]) -> PairScore:
         target_id=row["target"],
         method=row["method"],
         residual=float(row["residual"]),
+        features=np.array(row["features"].split(), dtype=np.float64),
     )
 
 

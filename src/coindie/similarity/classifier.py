@@ -19,13 +19,14 @@ import json
 from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from coindie.errors import CoinDieError, ParameterError
 from coindie.similarity.histogram import HistogramSettings
+from coindie.similarity.logistic import fit_platt_logistic, sigmoid
 
 FloatArray = NDArray[np.float64]
 
@@ -33,8 +34,6 @@ FloatArray = NDArray[np.float64]
 FORMAT_VERSION = 1
 #: The shipped default model, inside the package.
 DEFAULT_MODEL = "same_die_classifier.json"
-#: Folds of the out-of-fold decision values that calibrate the probabilities.
-CALIBRATION_FOLDS = 5
 
 
 class ClassifierError(CoinDieError, ValueError):
@@ -48,6 +47,10 @@ class SameDieClassifier:
     ``fit`` learns the scaler (unless it was given, e.g. the paper's), the regression and the calibration;
     ``predict_proba`` returns one probability per histogram.
     """
+
+    #: The scorer's name (``coindie run --scorer``) and what it reads of a pair (``PairScore.histogram``).
+    NAME: ClassVar[str] = "paper"
+    INPUT: ClassVar[str] = "histogram"
 
     C: float = 1.0
     settings: HistogramSettings = field(default_factory=HistogramSettings)
@@ -69,33 +72,16 @@ class SameDieClassifier:
         """Fit on ``histograms`` (n, bins) and boolean labels ``same_die`` (n,); returns ``self``.
 
         scikit-learn's ``CalibratedClassifierCV(method="sigmoid", ensemble=False)`` does the calibration:
-        Platt's sigmoid on out-of-fold decision values, then the regression refitted on every pair; its
-        numbers are copied out so that the model is plain JSON.
+        Platt's sigmoid on out-of-fold decision values, then the regression refitted on every pair
+        (:func:`coindie.similarity.logistic.fit_platt_logistic`).
         """
-        from sklearn.calibration import CalibratedClassifierCV
-        from sklearn.linear_model import LogisticRegression
-        from sklearn.model_selection import StratifiedKFold
-
         X, y = self._checked_training(histograms, same_die)
         if not self.fixed_scaler:
             self.mean = X.mean(axis=0)
             std = float(np.std(X - self.mean))
             self.std = std if std > 0 else 1.0
-        Z = self._standardised(X)
-        regression = LogisticRegression(C=self.C, max_iter=5000)  # L2 is scikit-learn's default penalty
-        folds = min(CALIBRATION_FOLDS, int(np.bincount(y).min()))
-        if folds >= 2:
-            splitter = StratifiedKFold(n_splits=folds, shuffle=True, random_state=seed)
-            fitted = CalibratedClassifierCV(regression, method="sigmoid", cv=splitter, ensemble=False)
-            calibrated = fitted.fit(Z, y).calibrated_classifiers_[0]
-            regression, sigmoid = calibrated.estimator, calibrated.calibrators[0]
-            # scikit-learn's sigmoid is 1 / (1 + exp(a f + b)); ours is 1 / (1 + exp(-(a f + b))).
-            self.platt = (-float(sigmoid.a_), -float(sigmoid.b_))
-        else:  # too few of one class to hold any out: the regression's own probabilities
-            regression.fit(Z, y)
-            self.platt = (1.0, 0.0)
-        self.coef = regression.coef_[0].astype(np.float64)
-        self.intercept = float(regression.intercept_[0])
+        fitted = fit_platt_logistic(self._standardised(X), y, self.C, seed)
+        self.coef, self.intercept, self.platt = fitted.coef, fitted.intercept, fitted.platt
         self.metadata = {**self.metadata, "n_pairs": int(len(y)), "n_same_die": int(y.sum())}
         return self
 
@@ -124,7 +110,7 @@ class SameDieClassifier:
     def predict_proba(self, histograms: ArrayLike) -> FloatArray:
         """Calibrated probability (n,) that each pair was struck by the same die."""
         a, b = self.platt
-        return _sigmoid(a * self.decision_function(histograms) + b)
+        return sigmoid(a * self.decision_function(histograms) + b)
 
     def _standardised(self, X: FloatArray) -> FloatArray:
         assert self.mean is not None and self.std is not None
@@ -240,7 +226,3 @@ class SameDieClassifier:
             C=C, settings=settings, mean=mean * factor, std=std * factor, fixed_scaler=True,
             metadata={"scaler": path.name, "scaler_rescaled_by": factor},
         )  # fmt: skip
-
-
-def _sigmoid(z: FloatArray) -> FloatArray:
-    return 0.5 * (1.0 + np.tanh(0.5 * np.asarray(z, dtype=np.float64)))

@@ -18,8 +18,9 @@ from numpy.typing import NDArray
 
 from coindie.registration.base import Registrar
 from coindie.scan import Scan
-from coindie.similarity.classifier import SameDieClassifier
 from coindie.similarity.histogram import HistogramSettings, c2c_histogram
+from coindie.similarity.relief_features import FEATURE_NAMES, ReliefFeatureSettings, relief_features
+from coindie.similarity.scorers import Scorer, default_scorer
 
 FloatArray = NDArray[np.float64]
 
@@ -43,18 +44,23 @@ class PairScore:
     target_id: str = ""
     method: str = ""
     residual: float = float("nan")
+    features: FloatArray = field(default_factory=lambda: np.zeros(0))
 
-    def classified(self, classifier: SameDieClassifier) -> PairScore:
-        """This pair with its probability from ``classifier`` (0 when the registration is invalid or the
-        histogram empty: no aligned point within range of the target)."""
+    def classified(self, classifier: Scorer) -> PairScore:
+        """This pair with its probability from ``classifier``, which reads the histogram (``paper``) or
+        the relief features (``relief``): 0 when the registration is invalid or its input empty (no
+        aligned point within range of the target, or no overlap of the two reliefs)."""
         if not self.valid:
             return replace(self, probability=0.0)
         mark = time.perf_counter()
-        if self.histogram.any():
-            probability, reason = float(classifier.predict_proba(self.histogram[None, :])[0]), ""
-        else:
+        reads = self.histogram if classifier.INPUT == "histogram" else self.features
+        if reads.any():
+            probability, reason = float(classifier.predict_proba(reads[None, :])[0]), ""
+        elif classifier.INPUT == "histogram":
             probability = 0.0
             reason = f"no aligned point within {classifier.settings.max_distance_mm} mm of the target"
+        else:
+            probability, reason = 0.0, "the two reliefs do not overlap once aligned"
         timings = {**self.timings, "classify": time.perf_counter() - mark}
         timings["total"] = timings.get("total", 0.0) + timings["classify"]
         return replace(self, probability=probability, reason=reason, timings=timings)
@@ -72,6 +78,7 @@ class PairScore:
             "histogram": np.asarray(self.histogram).tolist(),
             "residual": self.residual if np.isfinite(self.residual) else None,
             "timings": dict(self.timings),
+            "features": np.asarray(self.features).tolist(),
         }
 
     @classmethod
@@ -88,6 +95,7 @@ class PairScore:
             target_id=str(data.get("target_id", "")),
             method=str(data.get("method", "")),
             residual=float("nan") if residual is None else float(residual),
+            features=np.asarray(data.get("features", []), dtype=np.float64),
         )
 
 
@@ -96,25 +104,30 @@ def score_pair(
     target: Scan,
     registrar: Registrar | None = None,
     settings: HistogramSettings | None = None,
-    classifier: SameDieClassifier | None = None,
+    classifier: Scorer | None = None,
 ) -> PairScore:
-    """Register ``source`` onto ``target``, histogram the distances of the aligned clouds, and estimate
-    the probability that both faces were struck by the same die.
+    """Register ``source`` onto ``target``, measure the aligned pair (the paper's distance histogram and
+    the relief features), and estimate the probability that both faces were struck by the same die.
 
     Defaults: the ``relief`` registration method, the classifier's own histogram settings (those it was
-    trained with; the paper's when neither is given), the shipped classifier.
+    trained with; the paper's when neither is given), the shipped ``relief`` scorer.
     """
     classifier = classifier if classifier is not None else _default_classifier()
     settings = settings if settings is not None else classifier.settings
-    return measure_pair(source, target, registrar, settings).classified(classifier)
+    features = getattr(classifier, "features", None)
+    return measure_pair(source, target, registrar, settings, features).classified(classifier)
 
 
 def measure_pair(
-    source: Scan, target: Scan, registrar: Registrar | None = None, settings: HistogramSettings | None = None
+    source: Scan,
+    target: Scan,
+    registrar: Registrar | None = None,
+    settings: HistogramSettings | None = None,
+    features: ReliefFeatureSettings | None = None,
 ) -> PairScore:
     """:func:`score_pair` without the classifier (``probability`` is NaN for a valid registration, 0 for
-    an invalid one): what a batch stores, so that a classifier can be trained on, or applied to, the
-    histograms later without registering again."""
+    an invalid one): what a batch stores, so that either scorer can be trained on, or applied to, the
+    histograms and relief features later without registering again."""
     from coindie.registration import get_method
 
     start = time.perf_counter()
@@ -127,21 +140,25 @@ def measure_pair(
         timings["total"] = timings["register"]
         return PairScore(
             result.T_target_source, False, result.reason or "registration failed", np.zeros(settings.bins),
-            0.0, timings, residual=result.residual, **ids,
+            0.0, timings, residual=result.residual, features=np.zeros(len(FEATURE_NAMES)), **ids,
         )  # fmt: skip
     mark = time.perf_counter()
     histogram = c2c_histogram(source, target, result.T_target_source, settings)
     timings["histogram"] = time.perf_counter() - mark
+    mark = time.perf_counter()
+    relief = relief_features(source, target, result.T_target_source, features)
+    timings["features"] = time.perf_counter() - mark
     timings["total"] = time.perf_counter() - start
     return PairScore(
-        result.T_target_source, True, "", histogram, float("nan"), timings, residual=result.residual, **ids
-    )
+        result.T_target_source, True, "", histogram, float("nan"), timings, residual=result.residual,
+        features=relief, **ids,
+    )  # fmt: skip
 
 
-_DEFAULT: list[SameDieClassifier] = []
+_DEFAULT: list[Scorer] = []
 
 
-def _default_classifier() -> SameDieClassifier:
+def _default_classifier() -> Scorer:
     if not _DEFAULT:
-        _DEFAULT.append(SameDieClassifier.load_default())
+        _DEFAULT.append(default_scorer())
     return _DEFAULT[0]

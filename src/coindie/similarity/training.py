@@ -26,6 +26,7 @@ from coindie.errors import ParameterError
 from coindie.similarity.batch import BatchConfig, PairTask, measure_pairs
 from coindie.similarity.classifier import SameDieClassifier
 from coindie.similarity.score import PairScore
+from coindie.similarity.scorers import Scorer
 
 
 @dataclass(frozen=True)
@@ -116,17 +117,22 @@ def _sample(pairs: list[LabelledPair], n: int, rng: np.random.Generator) -> list
 def fit_classifier(
     scores: dict[tuple[str, str], PairScore],
     pairs: list[LabelledPair],
-    classifier: SameDieClassifier | None = None,
+    classifier: Scorer | None = None,
     *,
     seed: int = 0,
-) -> SameDieClassifier:
-    """Fit ``classifier`` (a new one with the paper's C = 1 by default) on the valid pairs' histograms."""
+) -> Scorer:
+    """Fit ``classifier`` (a new ``paper`` one with C = 1 by default) on the valid pairs' histograms, or
+    their relief features for a ``relief`` scorer."""
     classifier = classifier or SameDieClassifier()
+
+    def reads(score: PairScore) -> np.ndarray:
+        return score.histogram if classifier.INPUT == "histogram" else score.features
+
     used = [(scores[(p.source.face_id, p.target.face_id)], p.same_die) for p in pairs]
-    used = [(s, same) for s, same in used if s.valid and s.histogram.any()]
+    used = [(s, same) for s, same in used if s.valid and reads(s).any()]
     if not used:
         raise ParameterError("no training pair registered validly: nothing to fit the classifier on")
-    X = np.stack([s.histogram for s, _ in used])
+    X = np.stack([reads(s) for s, _ in used])
     y = np.array([same for _, same in used])
     classifier.fit(X, y, seed=seed)
     invalid = {True: 0, False: 0}
@@ -140,7 +146,7 @@ def fit_classifier(
 
 
 def train_similarity(
-    truth: HoardTruth,
+    truth: HoardTruth | list[HoardTruth],
     work_csv: str | Path,
     *,
     split: str = "cluster_train",
@@ -149,36 +155,58 @@ def train_similarity(
     negatives: float = 2.0,
     max_faces: int | None = 200,
     families: tuple[str, ...] = ("R", "D", "DB"),
-    classifier: SameDieClassifier | None = None,
+    classifier: Scorer | None = None,
     workers: int = 1,
     seed: int = 0,
     progress: Callable[[int, int], None] | None = None,
-) -> SameDieClassifier:
-    """Draw the training pairs, measure them (resuming ``work_csv``), fit and return the classifier."""
+) -> Scorer:
+    """Draw the training pairs of each hoard (``max_pairs`` per hoard), measure them (resuming
+    ``work_csv``, one file per hoard after the first: ``NAME-2.csv``, ...), fit and return the classifier.
+    Several hoards train one model: the ``wide`` world draws its physics per hoard."""
+    truths = truth if isinstance(truth, list) else [truth]
+    if not truths:
+        raise ParameterError("no hoard to train on")
     config = config or BatchConfig(settings=classifier.settings if classifier else BatchConfig().settings)
     if classifier is not None and classifier.settings != config.settings:
         raise ParameterError(
             "the classifier's histogram settings differ from the batch's: it would be trained on histograms "
             f"it does not describe ({classifier.settings} vs {config.settings})"
         )
-    pairs = labelled_pairs(
-        truth,
-        split,
-        max_pairs=max_pairs,
-        negatives=negatives,
-        max_faces=max_faces,
-        families=families,
-        seed=seed,
-    )
-    scores = measure_pairs([p.task() for p in pairs], work_csv, config, workers=workers, progress=progress)
+    scores: dict[tuple[str, str], PairScore] = {}
+    pairs: list[LabelledPair] = []
+    for k, hoard in enumerate(truths):
+        drawn = labelled_pairs(
+            hoard, split, max_pairs=max_pairs, negatives=negatives, max_faces=max_faces, families=families,
+            seed=seed + k,
+        )  # fmt: skip
+        csv = Path(work_csv) if k == 0 else Path(work_csv).with_name(f"{Path(work_csv).stem}-{k + 1}.csv")
+        measured = measure_pairs([p.task() for p in drawn], csv, config, workers=workers, progress=progress)
+        # ids repeat between hoards: key each hoard's pairs by its index too
+        scores.update({(f"{k}:{a}", f"{k}:{b}"): v for (a, b), v in measured.items()})
+        pairs += [_in_hoard(p, k) for p in drawn]
     classifier = classifier or SameDieClassifier(settings=config.settings)
     fitted = fit_classifier(scores, pairs, classifier, seed=seed)
     fitted.metadata.update(
         {
-            "trained_on": str(truth.root), "hoard": hoard_recipe(truth.root), "split": split,
-            "method": config.method, "seed": seed,
+            "trained_on": [str(t.root) for t in truths], "hoards": [hoard_recipe(t.root) for t in truths],
+            "split": split, "method": config.method, "seed": seed,
             "families": list(families), "negatives_per_positive": negatives, "max_faces": max_faces,
             "max_pairs": max_pairs,
         }
     )  # fmt: skip
+    if len(truths) == 1:
+        fitted.metadata["trained_on"], fitted.metadata["hoard"] = (
+            str(truths[0].root),
+            hoard_recipe(truths[0].root),
+        )
+        del fitted.metadata["hoards"]
     return fitted
+
+
+def _in_hoard(pair: LabelledPair, k: int) -> LabelledPair:
+    from dataclasses import replace
+
+    return LabelledPair(
+        replace(pair.source, face_id=f"{k}:{pair.source.face_id}"),
+        replace(pair.target, face_id=f"{k}:{pair.target.face_id}"),
+    )

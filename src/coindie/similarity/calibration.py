@@ -1,0 +1,177 @@
+"""Calibration on each hoard, without labels: what a same-die probability means on *this* hoard's scans.
+
+A scorer's probabilities were calibrated on its training hoards. On another scanner (noisier, coarser,
+smoothed) or other flans, the scores of both populations move, and a fixed probability no longer means
+the same. But a hoard carries its own answer: most of its same-side pairs are of different dies, a
+minority of the same die, and the two form two modes of the scorer's log-odds. So the log-odds of a
+hoard's registered pairs are fitted by a two-component Gaussian mixture (scikit-learn's
+``GaussianMixture``, EM started from the scorer's training populations, so that the upper component is
+the same-die one), and a pair's calibrated probability is its posterior of the same-die component —
+made non-decreasing in the score (the smallest posterior at or above it), since a Gaussian with the
+larger spread would otherwise also claim the far tail on the other side. The mixture gives the hoard's
+same-die share and the clustering threshold (τ = 0.5: a link is kept when same-die is the likelier
+population).
+
+When the log-odds do not split into two modes (Ashman's D < 2 between the components, or an upper
+component of less than one pair), the hoard's scores do not separate: the scorer's own probabilities are
+kept and :attr:`HoardCalibration.message` says so in words, with the numbers, for ``coindie run`` and
+``coindie status``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import asdict, dataclass
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from coindie.errors import ParameterError
+
+FloatArray = NDArray[np.float64]
+
+#: Ashman's D between the two components below which they are not told apart.
+MIN_SEPARATION = 2.0
+#: Fewest scored pairs a mixture is fitted on.
+MIN_PAIRS = 10
+#: Log-odds are clipped to +-this before fitting (a probability of exactly 0 or 1 has no finite logit).
+_MAX_LOG_ODDS = 30.0
+#: Smallest standard deviation of a component (log-odds units): no component collapses onto a few pairs.
+_MIN_SD = 0.25
+#: Threshold on the calibrated probability: the likelier population decides.
+MIXTURE_THRESHOLD = 0.5
+
+
+@dataclass(frozen=True)
+class HoardCalibration:
+    """The two populations of one hoard's scores, and whether they separate.
+
+    ``same`` and ``different`` are (mean, sd) of the log-odds of each component; ``same_share`` the
+    mixture weight of the same-die component; ``separation`` Ashman's D; ``refused`` the pairs whose
+    registration was refused (no pose), which the mixture does not see.
+    """
+
+    n_pairs: int
+    refused: int
+    same_share: float
+    same: tuple[float, float]
+    different: tuple[float, float]
+    separation: float
+    separates: bool
+    message: str
+
+    def probability(self, log_odds: ArrayLike) -> FloatArray:
+        """Calibrated probability of each log-odds value: the mixture's posterior when the populations
+        separate, else the scorer's own probability."""
+        z = np.clip(np.asarray(log_odds, dtype=np.float64), -_MAX_LOG_ODDS, _MAX_LOG_ODDS)
+        if not self.separates:
+            return 0.5 * (1.0 + np.tanh(0.5 * z))
+        grid = np.linspace(-_MAX_LOG_ODDS, _MAX_LOG_ODDS, 4001)
+        # the smallest posterior at or above each score: the wider component's far tail on the other
+        # side of the narrower one (a Gaussian artefact) claims no pair
+        posterior = np.minimum.accumulate(self._posterior(grid)[::-1])[::-1]
+        return np.interp(z, grid, posterior)
+
+    def _posterior(self, z: FloatArray) -> FloatArray:
+        w = self.same_share
+        log_same = np.log(w) + _log_normal(z, *self.same)
+        log_different = np.log1p(-w) + _log_normal(z, *self.different)
+        return 1.0 / (1.0 + np.exp(np.clip(log_different - log_same, -700, 700)))
+
+    def to_dict(self) -> dict[str, Any]:
+        return asdict(self)
+
+
+def log_odds(probabilities: ArrayLike) -> FloatArray:
+    """The logit of probabilities, clipped to a finite range."""
+    p = np.clip(np.asarray(probabilities, dtype=np.float64), 1e-13, 1 - 1e-13)
+    return np.clip(np.log(p) - np.log1p(-p), -_MAX_LOG_ODDS, _MAX_LOG_ODDS)
+
+
+def calibrate_hoard(
+    probabilities: ArrayLike,
+    *,
+    refused: int = 0,
+    prior: Mapping[str, tuple[float, float]] | None = None,
+    what: str = "same-side pairs",
+) -> HoardCalibration:
+    """Fit the two populations of a hoard's scored pairs (``probabilities`` of the pairs whose
+    registration found a pose; ``refused`` the others). ``prior``: the scorer's training populations
+    ``{"same": (mean, sd), "different": (mean, sd)}`` of the log-odds, where EM starts."""
+    z = log_odds(probabilities).ravel()
+    total = len(z) + refused
+    if refused < 0:
+        raise ParameterError(f"refused must be >= 0. Got {refused}.")
+    if len(z) < MIN_PAIRS:
+        return _not_separated(z, refused, 0.0, f"only {len(z)} of {total} {what} could be scored")
+    means, sds, weights = _fit(z, prior)
+    (mean_d, mean_s), (sd_d, sd_s), share = means, sds, float(weights[1])
+    separation = float(np.sqrt(2.0) * (mean_s - mean_d) / np.sqrt(sd_s**2 + sd_d**2))
+    refused_note = (
+        f"; {refused} of {total} ({refused / total:.0%}) refused by the registration" if refused else ""
+    )
+    if separation < MIN_SEPARATION or share * len(z) < 1.0:
+        reason = (
+            f"the scores of {len(z)} {what} do not separate into same-die and different-die populations "
+            f"(Ashman's D {separation:.2f} < {MIN_SEPARATION:g}; upper component {share:.1%} of the pairs, "
+            f"log-odds {mean_s:.2f} ± {sd_s:.2f} against {mean_d:.2f} ± {sd_d:.2f}){refused_note}: "
+            "the scorer's own probabilities are kept; check the scans' quality and the registrations"
+        )
+        return _not_separated(z, refused, separation, reason, share, (mean_s, sd_s), (mean_d, sd_d))
+    message = (
+        f"{len(z)} {what} scored: {share:.1%} in the same-die population (log-odds {mean_s:.2f} ± {sd_s:.2f} "
+        f"against {mean_d:.2f} ± {sd_d:.2f}, Ashman's D {separation:.2f}){refused_note}"
+    )
+    return HoardCalibration(
+        len(z), refused, share, (float(mean_s), float(sd_s)), (float(mean_d), float(sd_d)), separation, True,
+        message,
+    )  # fmt: skip
+
+
+def _fit(z: FloatArray, prior: Mapping[str, tuple[float, float]] | None) -> tuple[FloatArray, ...]:
+    """Means, sds and weights of the (different, same) components, EM from the prior or from the data's
+    bulk and upper tail."""
+    from sklearn.mixture import GaussianMixture
+
+    if prior and "same" in prior and "different" in prior:
+        start_means = np.array([prior["different"][0], prior["same"][0]])
+        start_sds = np.maximum([prior["different"][1], prior["same"][1]], _MIN_SD)
+    else:
+        start_means = np.array([np.median(z), np.quantile(z, 0.98)])
+        start_sds = np.full(2, max(float(np.std(z)) / 2.0, _MIN_SD))
+    if start_means[1] <= start_means[0]:
+        start_means[1] = start_means[0] + 2 * start_sds.max()
+    mixture = GaussianMixture(
+        2,
+        covariance_type="full",
+        means_init=start_means[:, None],
+        precisions_init=(1.0 / start_sds**2)[:, None, None],
+        weights_init=np.array([0.9, 0.1]),
+        reg_covar=_MIN_SD**2,
+        max_iter=500,
+        random_state=0,
+    ).fit(z[:, None])
+    means = mixture.means_[:, 0]
+    sds = np.sqrt(mixture.covariances_[:, 0, 0])
+    order = np.argsort(means)
+    return means[order], sds[order], mixture.weights_[order]
+
+
+def _not_separated(
+    z: FloatArray,
+    refused: int,
+    separation: float,
+    message: str,
+    share: float = float("nan"),
+    same: tuple[float, float] = (float("nan"), float("nan")),
+    different: tuple[float, float] = (float("nan"), float("nan")),
+) -> HoardCalibration:
+    return HoardCalibration(
+        len(z), refused, share, (float(same[0]), float(same[1])), (float(different[0]), float(different[1])),
+        separation, False, message,
+    )  # fmt: skip
+
+
+def _log_normal(z: FloatArray, mean: float, sd: float) -> FloatArray:
+    return -0.5 * ((z - mean) / sd) ** 2 - np.log(sd) - 0.5 * np.log(2 * np.pi)

@@ -1,0 +1,184 @@
+"""The ``relief`` same-die scorer: a calibrated logistic regression on the scale-free relief features.
+
+Its input is :data:`coindie.similarity.relief_features.FEATURE_NAMES` of a registered pair: correlations,
+taken to Fisher's z (``atanh``, which makes a correlation's sampling spread nearly constant), and the
+overlap share. Each is standardised by its training mean and standard deviation, then an L2 logistic
+regression with Platt calibration (:mod:`coindie.similarity.logistic`) gives the probability.
+
+The model also keeps the distribution of its calibrated log-odds over the training pairs of each class:
+the starting point of the per-hoard calibration (:mod:`coindie.similarity.calibration`), which then
+re-estimates both populations from a new hoard's own pairs. Stored as JSON, never a pickle.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from importlib import resources
+from pathlib import Path
+from typing import Any, ClassVar
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from coindie.errors import ParameterError
+from coindie.similarity.classifier import ClassifierError
+from coindie.similarity.histogram import HistogramSettings
+from coindie.similarity.logistic import fit_platt_logistic, sigmoid
+from coindie.similarity.relief_features import FEATURE_NAMES, ReliefFeatureSettings
+
+FloatArray = NDArray[np.float64]
+
+FORMAT = "coindie.relief_classifier"
+FORMAT_VERSION = 1
+#: The shipped default model, inside the package.
+DEFAULT_MODEL = "relief_classifier.json"
+#: Correlations are clipped to this before Fisher's z (a perfect copy would give infinity).
+_MAX_CORRELATION = 0.999
+
+
+@dataclass
+class ReliefClassifier:
+    """Probability that two registered faces were struck by the same die, from their relief features."""
+
+    NAME: ClassVar[str] = "relief"
+    INPUT: ClassVar[str] = "features"
+
+    C: float = 1.0
+    features: ReliefFeatureSettings = field(default_factory=ReliefFeatureSettings)
+    settings: HistogramSettings = field(default_factory=HistogramSettings)  # the cache's grids
+    mean: FloatArray | None = None
+    scale: FloatArray | None = None
+    coef: FloatArray | None = None
+    intercept: float = 0.0
+    platt: tuple[float, float] = (1.0, 0.0)
+    #: mean and sd of the calibrated log-odds of the training pairs: {"same": (m, s), "different": (m, s)}
+    populations: dict[str, tuple[float, float]] = field(default_factory=dict)
+    metadata: dict[str, Any] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        if not (isinstance(self.C, int | float) and self.C > 0):
+            raise ParameterError(f"The 'C' parameter of ReliefClassifier must be positive. Got {self.C!r}.")
+
+    @property
+    def is_fitted(self) -> bool:
+        return self.coef is not None and self.mean is not None and self.scale is not None
+
+    def fit(self, features: ArrayLike, same_die: ArrayLike, *, seed: int = 0) -> ReliefClassifier:
+        """Fit on ``features`` (n, len(FEATURE_NAMES)) and boolean labels ``same_die``; returns ``self``."""
+        X = transform_features(self._checked(features))
+        y = np.asarray(same_die).astype(bool).astype(int).ravel()
+        if len(y) != len(X):
+            raise ParameterError(f"{len(X)} feature rows but {len(y)} labels")
+        if len(np.unique(y)) < 2:
+            raise ParameterError("training needs both same-die and different-die pairs; got one class only")
+        self.mean = X.mean(axis=0)
+        scale = X.std(axis=0)
+        self.scale = np.where(scale > 0, scale, 1.0)
+        fitted = fit_platt_logistic((X - self.mean) / self.scale, y, self.C, seed)
+        self.coef, self.intercept, self.platt = fitted.coef, fitted.intercept, fitted.platt
+        logits = self.log_odds(features)
+        self.populations = {
+            name: (float(np.mean(logits[y == k])), float(np.std(logits[y == k])))
+            for name, k in (("same", 1), ("different", 0))
+        }
+        self.metadata = {**self.metadata, "n_pairs": int(len(y)), "n_same_die": int(y.sum())}
+        return self
+
+    def decision_function(self, features: ArrayLike) -> FloatArray:
+        """The regression's log-odds, before calibration."""
+        if not self.is_fitted:
+            raise ClassifierError("the relief classifier is not fitted (call fit, or load a model file)")
+        assert self.mean is not None and self.scale is not None and self.coef is not None
+        X = transform_features(self._checked(features))
+        return ((X - self.mean) / self.scale) @ self.coef + self.intercept
+
+    def log_odds(self, features: ArrayLike) -> FloatArray:
+        """The calibrated log-odds ``a f + b`` (the logit of :meth:`predict_proba`)."""
+        a, b = self.platt
+        return a * self.decision_function(features) + b
+
+    def predict_proba(self, features: ArrayLike) -> FloatArray:
+        """Calibrated probability (n,) that each pair was struck by the same die."""
+        return sigmoid(self.log_odds(features))
+
+    def _checked(self, features: ArrayLike) -> FloatArray:
+        X = np.atleast_2d(np.asarray(features, dtype=np.float64))
+        if X.ndim != 2 or X.shape[1] != len(FEATURE_NAMES):
+            raise ParameterError(f"relief features must be (n, {len(FEATURE_NAMES)}) arrays. Got {X.shape}.")
+        if not np.isfinite(X).all():
+            raise ParameterError("relief features contain NaN or infinite values")
+        return X
+
+    # ---------------------------------------------------------------------------------------- files
+
+    def to_dict(self) -> dict[str, Any]:
+        if not self.is_fitted:
+            raise ClassifierError("cannot save a relief classifier that is not fitted")
+        assert self.mean is not None and self.scale is not None and self.coef is not None
+        return {
+            "format": FORMAT,
+            "version": FORMAT_VERSION,
+            "model": "logistic regression (L2) on standardised relief features (correlations as Fisher z), "
+            "Platt-calibrated",
+            "feature_names": list(FEATURE_NAMES),
+            "C": self.C,
+            "features": self.features.to_dict(),
+            "settings": self.settings.to_dict(),
+            "scaler": {"mean": self.mean.tolist(), "scale": self.scale.tolist()},
+            "coef": self.coef.tolist(),
+            "intercept": self.intercept,
+            "platt": {"a": self.platt[0], "b": self.platt[1]},
+            "populations": {k: list(v) for k, v in self.populations.items()},
+            "metadata": self.metadata,
+        }
+
+    @classmethod
+    def from_dict(cls, data: dict[str, Any], where: str | Path = "classifier") -> ReliefClassifier:
+        try:
+            if data.get("format") != FORMAT:
+                raise ValueError(f"not a coindie relief classifier (no 'format' field {FORMAT!r})")
+            if int(data["version"]) > FORMAT_VERSION:
+                raise ValueError(f"format version {data['version']} is newer than this coindie's")
+            if list(data["feature_names"]) != list(FEATURE_NAMES):
+                raise ValueError(
+                    f"its features {data['feature_names']} are not this coindie's {FEATURE_NAMES}"
+                )
+            model = cls(
+                C=float(data["C"]),
+                features=ReliefFeatureSettings.from_dict(data["features"]),
+                settings=HistogramSettings.from_dict(data["settings"]),
+                mean=np.asarray(data["scaler"]["mean"], dtype=np.float64),
+                scale=np.asarray(data["scaler"]["scale"], dtype=np.float64),
+                coef=np.asarray(data["coef"], dtype=np.float64),
+                intercept=float(data["intercept"]),
+                platt=(float(data["platt"]["a"]), float(data["platt"]["b"])),
+                populations={k: (float(v[0]), float(v[1])) for k, v in data.get("populations", {}).items()},
+                metadata=dict(data.get("metadata", {})),
+            )
+        except (KeyError, TypeError, ValueError, ParameterError) as error:
+            raise ClassifierError(f"{where}: not a usable relief classifier file ({error})") from None
+        n = len(FEATURE_NAMES)
+        assert model.mean is not None and model.scale is not None and model.coef is not None
+        if model.mean.shape != (n,) or model.scale.shape != (n,) or model.coef.shape != (n,):
+            raise ClassifierError(f"{where}: scaler and coefficients must have {n} values (the features)")
+        return model
+
+    def save(self, path: str | Path) -> Path:
+        path = Path(path)
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(json.dumps(self.to_dict(), indent=1) + "\n")
+        return path
+
+    @classmethod
+    def load_default(cls) -> ReliefClassifier:
+        """The shipped model, trained on hoards of the ``wide`` synthetic world (docs/clustering.md)."""
+        resource = resources.files("coindie") / "data" / DEFAULT_MODEL
+        return cls.from_dict(json.loads(resource.read_text()), f"coindie/data/{DEFAULT_MODEL}")
+
+
+def transform_features(X: FloatArray) -> FloatArray:
+    """Fisher's z of the correlations (every feature but the last, the overlap share)."""
+    out = np.array(X, dtype=np.float64, copy=True)
+    out[:, :-1] = np.arctanh(np.clip(out[:, :-1], -_MAX_CORRELATION, _MAX_CORRELATION))
+    return out

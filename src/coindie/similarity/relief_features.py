@@ -1,0 +1,218 @@
+"""Scale-free same-die features of a registered pair: how alike the two reliefs are, not how close in mm.
+
+The paper's histogram measures cloud-to-cloud distances in millimetres, so its meaning moves with the
+scanner (noise, spacing, smoothing) and with the flans (cupping, bends): a classifier fitted on one
+scanner's histograms reads another scanner's same-die pairs as different dies. These features carry no
+absolute scale of one scanner:
+
+1. both faces are put in the target's canonical frame (its best-fit plane is z = 0) with the registration's
+   ``T_target_source``, and rasterised on one square grid (``pixel_mm``) centred on the target's origin;
+2. the low-frequency shape difference of the two aligned faces (cupping, doming, a bend, a tilt left by the
+   registration) is removed: the difference of the two height maps, blurred by ``shape_sigma_mm``, is taken
+   off the source;
+3. both reliefs are split into bands by differences of mask-normalised Gaussian blurs — *fine* (detail
+   below ``fine_sigma_mm``) and *coarse* (``fine_sigma_mm`` to ``coarse_sigma_mm``) — over the part both
+   faces cover, a ``margin_mm`` band inside the outlines left out (edge wall, flan border);
+4. the features are normalised cross-correlations (dimensionless, in [-1, 1]): over the whole overlap per
+   band, and *local* ones in Gaussian windows of ``window_mm`` whose median and 90th percentile say how much
+   of the face agrees (a weak strike, a crust or a worn half lowers the global figure, not the share that
+   still matches); plus the overlap itself (a share of the smaller footprint).
+
+Correlations are invariant to the relief's height scale and to a height offset, and noise only lowers them
+by the ratio of noise to detail, which the per-hoard calibration (:mod:`coindie.similarity.calibration`)
+then reads off the hoard's own score distribution.
+
+Written by hand: no maintained library computes masked band-pass correlations between two rasterised
+point clouds; the blurs are scipy's.
+"""
+
+from __future__ import annotations
+
+from collections import OrderedDict
+from dataclasses import asdict, dataclass
+from threading import Lock
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+from scipy import ndimage
+
+from coindie.errors import ParameterError
+from coindie.preprocess.canonical import CanonicalFrame, canonical_frame
+from coindie.preprocess.heightmap import HeightMap, height_map
+from coindie.scan import Scan
+
+FloatArray = NDArray[np.float64]
+BoolArray = NDArray[np.bool_]
+
+#: The features, in the order of :func:`relief_features`' vector.
+FEATURE_NAMES = ("ncc_fine", "ncc_coarse", "local_median", "local_p90", "overlap")
+#: Targets' canonical frames and height maps kept ready (a 32 mm field at 0.2 mm is 160 x 160 pixels).
+TARGET_CACHE_SIZE = 64
+#: Points of a face used to fit its canonical frame (a regular subsample of larger clouds).
+_FRAME_POINTS = 6000
+#: Sources are rasterised from at most this many points (a regular subsample): a few per pixel suffice.
+_MAX_SOURCE_POINTS = 40_000
+#: Pixels whose local window sees less than this share of overlap are left out of the local statistics.
+_MIN_WINDOW_WEIGHT = 0.5
+_EPS = 1e-12
+
+
+@dataclass(frozen=True)
+class ReliefFeatureSettings:
+    """How a registered pair becomes :data:`FEATURE_NAMES`. Lengths are in mm on the coin, not on the
+    scanner: they describe the size of a die's details (strokes, pellets), which no scanner changes."""
+
+    pixel_mm: float = 0.2
+    field_mm: float = 32.0
+    shape_sigma_mm: float = 3.0
+    fine_sigma_mm: float = 0.6
+    coarse_sigma_mm: float = 2.0
+    window_mm: float = 2.5
+    margin_mm: float = 0.6
+
+    def __post_init__(self) -> None:
+        for name, value in asdict(self).items():
+            if not (isinstance(value, int | float) and np.isfinite(value) and value >= 0):
+                raise ParameterError(
+                    f"The '{name}' parameter of ReliefFeatureSettings must be a finite number >= 0. "
+                    f"Got {value!r}."
+                )
+        if not 0 < self.pixel_mm < self.fine_sigma_mm < self.coarse_sigma_mm:
+            raise ParameterError(
+                "ReliefFeatureSettings needs 0 < pixel_mm < fine_sigma_mm < coarse_sigma_mm. "
+                f"Got {self.pixel_mm}, {self.fine_sigma_mm}, {self.coarse_sigma_mm}."
+            )
+        if self.field_mm < 10 * self.pixel_mm or self.window_mm <= 0 or self.shape_sigma_mm <= 0:
+            raise ParameterError(
+                "ReliefFeatureSettings needs field_mm >= 10 pixels and window_mm, shape_sigma_mm > 0. "
+                f"Got field_mm={self.field_mm}, window_mm={self.window_mm}, "
+                f"shape_sigma_mm={self.shape_sigma_mm}."
+            )
+
+    @property
+    def size_px(self) -> int:
+        return int(round(self.field_mm / self.pixel_mm))
+
+    def to_dict(self) -> dict[str, Any]:
+        return asdict(self)
+
+    @classmethod
+    def from_dict(cls, data: dict[str, Any]) -> ReliefFeatureSettings:
+        return cls(**{k: float(v) for k, v in data.items()})
+
+
+@dataclass(frozen=True, eq=False)
+class _Target:
+    frame: CanonicalFrame
+    heights: FloatArray  # (size, size) heights above the target's plane; NaN outside
+    mask: BoolArray
+
+
+def relief_features(
+    source: Scan, target: Scan, T_target_source: FloatArray, settings: ReliefFeatureSettings | None = None
+) -> FloatArray:
+    """The :data:`FEATURE_NAMES` of ``source`` moved by ``T_target_source`` onto ``target`` (zeros when
+    the two faces do not overlap)."""
+    settings = settings or ReliefFeatureSettings()
+    prepared = _prepared_target(target, settings)
+    if source.n_points > _MAX_SOURCE_POINTS:
+        source = source.subset(np.arange(0, source.n_points, -(-source.n_points // _MAX_SOURCE_POINTS)))
+    moved = source.transformed(np.asarray(T_target_source, dtype=np.float64))
+    source_heights = _grid_heights(moved, prepared.frame, settings)
+    source_mask = np.isfinite(source_heights)
+    both = _eroded(source_mask, settings) & _eroded(prepared.mask, settings)
+    smaller = min(int(source_mask.sum()), int(prepared.mask.sum()))
+    if smaller == 0 or both.sum() < 25:
+        return np.zeros(len(FEATURE_NAMES))
+    overlap = float((source_mask & prepared.mask).sum()) / smaller
+    a = np.where(both, source_heights, 0.0)
+    b = np.where(both, prepared.heights, 0.0)
+    a = a - np.where(both, _masked_blur(a - b, both, settings.shape_sigma_mm / settings.pixel_mm), 0.0)
+    fine_a, coarse_a = _bands(a, both, settings)
+    fine_b, coarse_b = _bands(b, both, settings)
+    local = _local_ncc(fine_a, fine_b, both, settings.window_mm / settings.pixel_mm)
+    median, p90 = np.percentile(local, [50, 90]) if len(local) else (0.0, 0.0)
+    return np.array(
+        [_ncc(fine_a, fine_b, both), _ncc(coarse_a, coarse_b, both), median, p90, overlap], dtype=np.float64
+    )
+
+
+def _bands(heights: FloatArray, mask: BoolArray, settings: ReliefFeatureSettings) -> tuple[FloatArray, ...]:
+    fine_blur = _masked_blur(heights, mask, settings.fine_sigma_mm / settings.pixel_mm)
+    coarse_blur = _masked_blur(heights, mask, settings.coarse_sigma_mm / settings.pixel_mm)
+    return np.where(mask, heights - fine_blur, 0.0), np.where(mask, fine_blur - coarse_blur, 0.0)
+
+
+def _masked_blur(values: FloatArray, mask: BoolArray, sigma_px: float) -> FloatArray:
+    """Gaussian blur of the values inside ``mask``, normalised by the blurred mask (no edge darkening)."""
+    weight = ndimage.gaussian_filter(mask.astype(np.float64), sigma_px)
+    blurred = ndimage.gaussian_filter(np.where(mask, values, 0.0), sigma_px)
+    return blurred / np.maximum(weight, _EPS)
+
+
+def _ncc(a: FloatArray, b: FloatArray, mask: BoolArray) -> float:
+    x, y = a[mask] - a[mask].mean(), b[mask] - b[mask].mean()
+    denominator = np.sqrt(np.dot(x, x) * np.dot(y, y))
+    return float(np.dot(x, y) / denominator) if denominator > _EPS else 0.0
+
+
+def _local_ncc(a: FloatArray, b: FloatArray, mask: BoolArray, sigma_px: float) -> FloatArray:
+    """Windowed correlations of two zero-mean band images at the pixels whose window is mostly overlap."""
+    weight = ndimage.gaussian_filter(mask.astype(np.float64), sigma_px)
+    ab, aa, bb = (ndimage.gaussian_filter(p, sigma_px) for p in (a * b, a * a, b * b))
+    keep = mask & (weight > _MIN_WINDOW_WEIGHT)
+    return ab[keep] / np.sqrt(np.maximum(aa[keep] * bb[keep], _EPS))
+
+
+def _eroded(mask: BoolArray, settings: ReliefFeatureSettings) -> BoolArray:
+    margin_px = settings.margin_mm / settings.pixel_mm
+    if margin_px <= 0:
+        return mask
+    return ndimage.distance_transform_edt(mask) > margin_px
+
+
+def _grid_heights(scan: Scan, frame: CanonicalFrame, settings: ReliefFeatureSettings) -> FloatArray:
+    """Heights above ``frame``'s plane on the settings' square grid centred on the frame's origin."""
+    relief = height_map(scan, resolution=settings.pixel_mm, frame=frame, detrend="plane")
+    return _centred(relief, settings)
+
+
+def _centred(relief: HeightMap, settings: ReliefFeatureSettings) -> FloatArray:
+    size = settings.size_px
+    coordinates = (np.arange(size) - (size - 1) / 2.0) * settings.pixel_mm
+    y, x = np.meshgrid(coordinates[::-1], coordinates, indexing="ij")
+    rows, cols = relief.mm_to_pixel(x, y)
+    values = np.asarray(relief.values, dtype=np.float64)
+    # nearest-pixel sampling keeps NaN (no data) from spreading into the neighbouring pixels
+    return ndimage.map_coordinates(values, [rows, cols], order=0, mode="constant", cval=np.nan)
+
+
+_CACHE: OrderedDict[tuple[bytes, ReliefFeatureSettings], _Target] = OrderedDict()
+_LOCK = Lock()
+
+
+def _prepared_target(target: Scan, settings: ReliefFeatureSettings) -> _Target:
+    from coindie.registration.geometry import content_key
+
+    normals = target.normals if target.normals is not None else np.zeros_like(target.points)
+    key = (content_key(target.points, normals), settings)
+    with _LOCK:
+        if key in _CACHE:
+            _CACHE.move_to_end(key)
+            return _CACHE[key]
+    stride = -(-target.n_points // _FRAME_POINTS)
+    frame = canonical_frame(target.subset(np.arange(0, target.n_points, stride)))
+    heights = _grid_heights(target, frame, settings)
+    prepared = _Target(frame, heights, np.isfinite(heights))
+    with _LOCK:
+        _CACHE[key] = prepared
+        while len(_CACHE) > TARGET_CACHE_SIZE:
+            _CACHE.popitem(last=False)
+    return prepared
+
+
+def clear_cache() -> None:
+    """Forget the prepared targets (benchmarks timing a cold start)."""
+    with _LOCK:
+        _CACHE.clear()
