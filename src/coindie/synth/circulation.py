@@ -1,7 +1,8 @@
 """Circulation: what happens to a coin between its strike and its scan.
 
 - wear: the high points rub first. The relief r becomes r (1 - w r / top): the design's top loses a
-  share ``w`` of its height, lower relief proportionally less, the field nothing;
+  share ``w`` of its height, lower relief proportionally less, the field nothing; above w = 0.5 (where
+  that curve would fold over) the w = 0.5 curve is planed off at (1 - w) top;
 - scratches: thin V-shaped grooves along slightly bowed lines;
 - nicks: small dents with sharp edges (knocks against other coins);
 - corrosion pits: many tiny pits, gathered around a few corrosion spots;
@@ -22,6 +23,9 @@ from coindie.errors import ParameterError
 from coindie.synth import _raster
 from coindie.synth._params import check_ranges, new_field, param
 from coindie.synth.strike import Surface
+
+#: Softness (mm) of the plane that heavy wear (over half the top's height) cuts the relief with.
+_WEAR_SOFTNESS_MM = 0.01
 
 
 @dataclass(frozen=True)
@@ -187,7 +191,15 @@ def circulate(surface: Surface, spec: CirculationSpec) -> None:
     if spec.wear > 0:
         top = max(surface.design_top(), 1e-6)
         r = surface.relief
-        surface.relief = r * (1.0 - spec.wear * np.clip(r, 0.0, None) / top)
+        if spec.wear <= 0.5:
+            surface.relief = r * (1.0 - spec.wear * np.clip(r, 0.0, None) / top)
+        else:
+            # r (1 - w r / top) stops rising at r = top / 2w: above w = 0.5 it would turn the high points
+            # into hollows. Heavier wear keeps the w = 0.5 curve (flat at the top) and planes it off at the
+            # height (1 - w) top, softly (a soft minimum over _WEAR_SOFTNESS_MM), as a worn coin's plateaus.
+            worn = r * (1.0 - 0.5 * np.clip(r, 0.0, None) / top)
+            cap = (1.0 - spec.wear) * top
+            surface.relief = cap - _WEAR_SOFTNESS_MM * np.logaddexp(0.0, (cap - worn) / _WEAR_SOFTNESS_MM)
     grid = surface.grid
     for scratch in spec.scratches:
         _raster.paste_add(surface.relief, _groove(grid, scratch), sign=-1.0)
