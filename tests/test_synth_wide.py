@@ -298,3 +298,41 @@ def test_cli_makes_a_wide_hoard_and_records_its_physics(tmp_path):
     assert hoard["parameters"]["physics"]["strike"]["cup_mm"] == wide_physics(0).strike.cup_mm
     bad = CliRunner().invoke(app, ["synth", str(tmp_path / "x"), "--physics", "nope", "--quiet"])
     assert bad.exit_code == 2 and "unknown physics" in bad.output
+
+
+def test_a_rescanned_hoard_has_the_same_coins_and_other_scans():
+    from coindie.synth.physics import rescanned
+
+    physics = wide_physics(2)
+    again = rescanned(physics, noise_factor=2.0, spacing_factor=2.0, added_cup_mm=0.15)
+    assert again.scan.noise_mm == (2 * physics.scan.noise_mm[0], 2 * physics.scan.noise_mm[1])
+    assert again.scan.spacing_mm == 2 * physics.scan.spacing_mm
+    cups = []
+    for seed in range(30):
+        a, b = (
+            sample_face_spec(
+                np.random.default_rng(seed), 0.5, strike=p.strike, circulation=p.circulation, scan=p.scan
+            )
+            for p in (physics, again)
+        )
+        assert a.circulation == b.circulation and a.scan.yaw_deg == b.scan.yaw_deg
+        assert dataclasses.replace(b.strike, cup_mm=a.strike.cup_mm) == a.strike
+        assert b.scan.noise_mm == pytest.approx(2 * a.scan.noise_mm)
+        cups.append(b.strike.cup_mm - a.strike.cup_mm)
+    assert max(np.abs(cups)) <= 0.15 and np.ptp(cups) > 0.2
+
+
+def test_study_preset_has_twelve_unbalanced_dies_all_in_the_clustering_test():
+    from collections import Counter
+
+    from coindie.synth import get_preset, plan_hoard
+
+    plan = plan_hoard(get_preset("study"), 0)
+    sizes = Counter(f.die_id for f in plan.faces)
+    assert len(plan.faces) == 80 and len(sizes) == 12
+    assert sum(n for d, n in sizes.items() if d.startswith("R")) == 40
+    assert all("cluster_test" in f.splits for f in plan.faces)
+    registration = {f.die_id for f in plan.faces if "registration_test" in f.splits}
+    assert len(registration) == 6 and {d[0] for d in registration} == {"D", "R"}
+    assert max(sizes.values()) >= 10 and min(sizes.values()) <= 2
+    assert len({f.coin for f in plan.faces}) == 40  # every coin has both faces

@@ -10,7 +10,7 @@ transform between two faces a, b of one die is ``T_scan_die[b] @ inv(T_scan_die[
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -68,7 +68,12 @@ def sample_face_spec(
     """Draw a face's strike, circulation damage and scan from the documented ranges."""
     strike_spec = sample_strike(rng, strike)
     damage = sample_circulation(rng, circulation, strike_spec.flan_radius_mm)
-    return FaceSpec(float(die_age), strike_spec, damage, sample_scan(rng, scan, strike_spec.flan_radius_mm))
+    scan_spec = sample_scan(rng, scan, strike_spec.flan_radius_mm)
+    if strike.cup_added_mm > 0:
+        # Drawn last, so that the coin is the same coin with another cupping.
+        added = float(rng.uniform(-strike.cup_added_mm, strike.cup_added_mm))
+        strike_spec = replace(strike_spec, cup_mm=strike_spec.cup_mm + added)
+    return FaceSpec(float(die_age), strike_spec, damage, scan_spec)
 
 
 @dataclass(frozen=True, eq=False)

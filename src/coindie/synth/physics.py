@@ -200,9 +200,7 @@ AXES: dict[str, Axis] = {
         Axis("normals", "share of faces with estimated (PCA) normals 0-1", "face", _normals),
         Axis("holes", "share of the face missing 0-0.15, in 1-3 blobs", "face (v/2-v)", _holes),
         Axis("scanners", "a second scanner, up to the mirror image of the first", "face", _scanners),
-        Axis(
-            "cupping", "cupping sd at 10 mm 0-0.15 mm (differences up to ~±0.3)", "coin", _cupping
-        ),
+        Axis("cupping", "cupping sd at 10 mm 0-0.15 mm (differences up to ~±0.3)", "coin", _cupping),
         Axis("bend", "share of bent coins 0-0.5, fold 3-15 deg", "coin", _bend),
         Axis("broken", "share of broken flans 0-0.5, break 0.8-5 mm deep", "coin", _broken),
         Axis("weak", "weak zones on 0-100 % of coins, up to ~half the face", "coin", _weak),
@@ -278,6 +276,37 @@ def _wide_scanner(rng: np.random.Generator) -> ScanParams:
         smoothing_mm=smoothing,
         estimated_normals=estimated,
         hole_share=(0.0, holes),
+    )
+
+
+def rescanned(
+    physics: PhysicsParams,
+    *,
+    noise_factor: float = 1.0,
+    spacing_factor: float = 1.0,
+    added_cup_mm: float = 0.0,
+) -> PhysicsParams:
+    """The same hoard's coins rescanned: every scanner's noise and spacing multiplied, and each coin's
+    cupping changed by U(-added_cup_mm, +added_cup_mm) (0.15: differences up to ±0.3 mm at 10 mm).
+
+    Made with the same preset and seed, the hoard has the same dies, coins, strikes and damage (those are
+    drawn before the scan, and the added cupping after everything); only the scans differ.
+    """
+
+    def scaled(scan: ScanParams) -> ScanParams:
+        lo, hi = scan.noise_mm
+        return replace(
+            scan,
+            spacing_mm=scan.spacing_mm * spacing_factor,
+            noise_mm=(lo * noise_factor, hi * noise_factor),
+        )
+
+    strike = replace(physics.strike, cup_added_mm=physics.strike.cup_added_mm + added_cup_mm)
+    return replace(
+        physics,
+        scan=scaled(physics.scan),
+        scanners=tuple(scaled(s) for s in physics.scanners),
+        strike=strike,
     )
 
 

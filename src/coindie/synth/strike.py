@@ -65,6 +65,14 @@ class StrikeParams:
     cup_mm: float = param(
         0.02, unit="mm", lo=0.0, hi=1.0, doc="sd of the flan's extra cupping (+) or doming (-) at 10 mm"
     )
+    cup_added_mm: float = param(
+        0.0,
+        unit="mm",
+        lo=0.0,
+        hi=1.0,
+        new=True,
+        doc="each coin's cupping at 10 mm changed by U(-a, a), drawn after all else (same coins, recupped)",
+    )
     weak_probability: float = param(0.4, unit="probability", lo=0.0, hi=1.0, doc="chance of weak zones")
     weak_zones_max: int = param(2, unit="count", lo=1, hi=8, doc="at most this many weak zones")
     weak_radius_mm: tuple[float, float] = param(
