@@ -123,9 +123,10 @@ def generate(
     workers: int = 1,
     progress: Progress | None = None,
     overwrite: bool = False,
-    physics_name: str = "custom",
+    physics_name: str | None = None,
 ) -> HoardReport:
-    """Make every face of ``plan`` and write the hoard's files."""
+    """Make every face of ``plan`` and write the hoard's files (``physics_name`` goes to hoard.json;
+    default: ``default`` for today's parameters, else ``custom``)."""
     if workers < 1:
         raise ParameterError(f"workers must be at least 1, got {workers}")
     out = Path(out_dir)
@@ -141,7 +142,8 @@ def generate(
     write_json(out / TRUTH_FILE, {"settings": digest(settings), **truth_document(plan, records)})
     seconds = time.perf_counter() - started
     report = HoardReport(out, len(plan.faces), len(todo), len(plan.faces) - len(todo), seconds, workers)
-    write_json(out / HOARD_FILE, {**_hoard_document(settings, report), "physics": physics_name})
+    name = physics_name or resolve_physics(physics, plan.seed)[1]
+    write_json(out / HOARD_FILE, {**_hoard_document(settings, report), "physics": name})
     shutil.rmtree(out / PARTS_DIR, ignore_errors=True)
     return report
 
