@@ -23,28 +23,53 @@ def synth(
             "the same settings is resumed)."
         ),
     ],
-    preset: Annotated[str, typer.Option(help="riedones (the real study's counts) or tiny.")] = "riedones",
+    preset: Annotated[
+        str, typer.Option(help="riedones (the real study's counts), study (80 faces, 12 dies) or tiny.")
+    ] = "riedones",
     scale: Annotated[float, typer.Option(help="Shrink the preset proportionally (0 < S <= 1).")] = 1.0,
     seed: Annotated[int, typer.Option(help="Seed of the whole hoard.")] = 0,
     workers: Annotated[int, typer.Option(help="Worker processes (the output does not depend on it).")] = 1,
-    spacing: Annotated[float, typer.Option(help="Scanner vertex spacing (mm).")] = 0.05,
+    physics: Annotated[
+        str,
+        typer.Option(
+            help="default, wide (every axis of the wide world drawn per hoard), hard (every axis at its "
+            "hard end), or AXIS:LEVEL (e.g. noise:high), each followed by any ,AXIS:LEVEL; "
+            "see docs/synthetic.md."
+        ),
+    ] = "default",
+    spacing: Annotated[
+        float | None,
+        typer.Option(
+            help="Scanner vertex spacing (mm; default 0.05, or the physics'); sets every scanner's."
+        ),
+    ] = None,
     overwrite: Annotated[bool, typer.Option(help="Replace a hoard of other settings found in OUT.")] = False,
     quiet: Annotated[bool, typer.Option(help="No progress bar.")] = False,
 ) -> None:
     """Generate a synthetic hoard: one PLY per face, labels.csv, splits.csv, truth.json, hoard.json."""
-    from coindie.synth.hoard import PhysicsParams, synthesize
-    from coindie.synth.scanner import ScanParams
+    from dataclasses import replace
+
+    from coindie.synth.hoard import synthesize
+    from coindie.synth.physics import physics_by_name
 
     if seed < 0:
         raise ParameterError(f"--seed must be >= 0, got {seed}")
-    physics = PhysicsParams(scan=ScanParams(spacing_mm=spacing))
+    named = physics_by_name(physics)
+    params = named.resolve(seed)
+    if spacing is not None:
+        params = replace(
+            params,
+            scan=replace(params.scan, spacing_mm=spacing),
+            scanners=tuple(replace(s, spacing_mm=spacing) for s in params.scanners),
+        )
     with _progress_bar(quiet) as progress:
         report = synthesize(
             out,
             preset=preset,
             scale=scale,
             seed=seed,
-            physics=physics,
+            physics=params,
+            physics_name=named.name if spacing is None else f"{named.name} (spacing {spacing} mm)",
             workers=workers,
             progress=progress,
             overwrite=overwrite,

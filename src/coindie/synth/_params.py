@@ -13,13 +13,22 @@ from typing import Any
 from coindie.errors import ParameterError
 
 
-def param(default: Any, *, unit: str, lo: float, hi: float, doc: str, pair: bool = False) -> Any:
+def param(
+    default: Any, *, unit: str, lo: float, hi: float, doc: str, pair: bool = False, new: bool = False
+) -> Any:
     """A dataclass field with its unit, range [lo, hi] and documentation.
 
     ``pair=True`` marks a ``(low, high)`` range drawn per coin or per die: both ends must lie in [lo, hi]
-    and low <= high.
+    and low <= high. ``new=True`` marks an axis added after hoards were first made: its default is today's
+    behaviour and it is left out of the hoard's records while it holds it (see ``writer.to_jsonable``).
     """
-    return field(default=default, metadata={"unit": unit, "range": (lo, hi), "doc": doc, "pair": pair})
+    metadata = {"unit": unit, "range": (lo, hi), "doc": doc, "pair": pair, "omit_default": new}
+    return field(default=default, metadata=metadata)
+
+
+def new_field(default: Any) -> Any:
+    """A field of a drawn spec added with the wide world's axes, left out of records at its default."""
+    return field(default=default, metadata={"omit_default": True})
 
 
 def check_ranges(obj: Any) -> None:

@@ -20,7 +20,7 @@ import argparse
 import json
 import re
 from collections import Counter
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, is_dataclass
 from pathlib import Path
 from typing import Any
 
@@ -370,6 +370,8 @@ def parameter_tables() -> str:
 
     lines = []
     for name, value in vars(PhysicsParams()).items():
+        if not is_dataclass(value):  # ``scanners``: more ScanParams
+            continue
         lines += [
             f"**{type(value).__name__}** (`PhysicsParams.{name}`)",
             "",

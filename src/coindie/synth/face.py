@@ -10,7 +10,7 @@ transform between two faces a, b of one die is ``T_scan_die[b] @ inv(T_scan_die[
 
 from __future__ import annotations
 
-from dataclasses import asdict, dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -19,8 +19,18 @@ from coindie.errors import ParameterError
 from coindie.scan import Scan, normal_colors
 from coindie.synth.circulation import CirculationParams, CirculationSpec, circulate, sample_circulation
 from coindie.synth.design import Die
-from coindie.synth.scanner import ScanParams, ScanSpec, add_noise, face_points, sample_scan, wall_points
+from coindie.synth.scanner import (
+    ScanParams,
+    ScanSpec,
+    add_noise,
+    estimate_normals,
+    face_points,
+    sample_scan,
+    smooth_heights,
+    wall_points,
+)
 from coindie.synth.strike import StrikeParams, StrikeSpec, bend_points, coin_grid, sample_strike, strike
+from coindie.synth.writer import to_jsonable
 
 FloatArray = np.ndarray
 _DEFAULT_STRIKE, _DEFAULT_CIRCULATION, _DEFAULT_SCAN = StrikeParams(), CirculationParams(), ScanParams()
@@ -58,7 +68,12 @@ def sample_face_spec(
     """Draw a face's strike, circulation damage and scan from the documented ranges."""
     strike_spec = sample_strike(rng, strike)
     damage = sample_circulation(rng, circulation, strike_spec.flan_radius_mm)
-    return FaceSpec(float(die_age), strike_spec, damage, sample_scan(rng, scan))
+    scan_spec = sample_scan(rng, scan, strike_spec.flan_radius_mm)
+    if strike.cup_added_mm > 0:
+        # Drawn last, so that the coin is the same coin with another cupping.
+        added = float(rng.uniform(-strike.cup_added_mm, strike.cup_added_mm))
+        strike_spec = replace(strike_spec, cup_mm=strike_spec.cup_mm + added)
+    return FaceSpec(float(die_age), strike_spec, damage, scan_spec)
 
 
 @dataclass(frozen=True, eq=False)
@@ -92,6 +107,11 @@ def make_face(die: Die, spec: FaceSpec, face_id: str, seed: int) -> SynthFace:
     if spec.strike.bend is not None:
         points, normals = bend_points(spec.strike.bend, points, normals)
     points, normals = add_noise(points, normals, spec.scan, rng)
+    n_face = len(face_xyz)
+    if spec.scan.smoothing_mm > 0:
+        points[:n_face] = smooth_heights(points[:n_face], spec.scan.smoothing_mm)
+    if spec.scan.estimated_normals:
+        normals = estimate_normals(points, normals, spec.scan.normal_neighbours)
     # Pose on the scanner's plate
     T_scan_coin = spec.scan.T_scan_coin()
     R, t = T_scan_coin[:3, :3], T_scan_coin[:3, 3]
@@ -124,5 +144,5 @@ def _info(die: Die, spec: FaceSpec, n_face: int, n_wall: int, pitch: float) -> d
         "n_wall_points": n_wall,
         "surface_pitch_mm": pitch,
         "open_cracks": open_cracks,
-        "spec": asdict(spec),
+        "spec": to_jsonable(spec),
     }

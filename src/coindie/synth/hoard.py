@@ -15,7 +15,7 @@ import shutil
 import time
 from collections.abc import Callable, Iterator
 from concurrent.futures import ProcessPoolExecutor, as_completed
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from datetime import UTC, datetime
 from functools import lru_cache
 from multiprocessing import get_context
@@ -28,14 +28,12 @@ from threadpoolctl import threadpool_limits
 from coindie import __version__
 from coindie.errors import ParameterError
 from coindie.io import write_ply
-from coindie.synth.circulation import CirculationParams
 from coindie.synth.design import DieParams, Family, make_die, make_type
 from coindie.synth.face import make_face, sample_face_spec
 from coindie.synth.life import LifeParams
+from coindie.synth.physics import NamedPhysics, PhysicsParams, physics_by_name
 from coindie.synth.plan import FacePlan, HoardPlan, derived_seed, plan_hoard
 from coindie.synth.presets import get_preset
-from coindie.synth.scanner import ScanParams
-from coindie.synth.strike import StrikeParams
 from coindie.synth.writer import (
     HOARD_FILE,
     PARTS_DIR,
@@ -53,17 +51,6 @@ from coindie.synth.writer import (
 FACES_PER_TASK = 16
 
 Progress = Callable[[int, int], None]
-
-
-@dataclass(frozen=True)
-class PhysicsParams:
-    """The physics' parameters used for every face of a hoard (the per-face values are drawn from them)."""
-
-    die: DieParams = field(default_factory=DieParams)
-    life: LifeParams = field(default_factory=LifeParams)
-    strike: StrikeParams = field(default_factory=StrikeParams)
-    circulation: CirculationParams = field(default_factory=CirculationParams)
-    scan: ScanParams = field(default_factory=ScanParams)
 
 
 @dataclass(frozen=True)
@@ -95,16 +82,37 @@ def synthesize(
     preset: str = "riedones",
     scale: float = 1.0,
     seed: int = 0,
-    physics: PhysicsParams | None = None,
+    physics: PhysicsParams | NamedPhysics | str | None = None,
     workers: int = 1,
     progress: Progress | None = None,
     overwrite: bool = False,
+    physics_name: str | None = None,
 ) -> HoardReport:
-    """Plan and generate a hoard into ``out_dir`` (see :mod:`coindie.synth.writer` for the files)."""
+    """Plan and generate a hoard into ``out_dir`` (see :mod:`coindie.synth.writer` for the files).
+
+    ``physics``: parameters, or a physics by name (``physics_by_name("wide")`` or the name itself, see
+    :mod:`coindie.synth.physics`), resolved with the hoard's seed; its name (or ``physics_name``) goes to
+    ``hoard.json``.
+    """
     plan = plan_hoard(get_preset(preset, scale), seed)
+    params, name = resolve_physics(physics, seed)
+    name = physics_name or name
     return generate(
-        out_dir, plan, physics or PhysicsParams(), workers=workers, progress=progress, overwrite=overwrite
+        out_dir, plan, params, workers=workers, progress=progress, overwrite=overwrite, physics_name=name
     )
+
+
+def resolve_physics(
+    physics: PhysicsParams | NamedPhysics | str | None, seed: int
+) -> tuple[PhysicsParams, str]:
+    """The parameters of a hoard's physics and its name (``custom`` for parameters other than today's)."""
+    if physics is None:
+        return PhysicsParams(), "default"
+    if isinstance(physics, str):
+        physics = physics_by_name(physics)
+    if isinstance(physics, NamedPhysics):
+        return physics.resolve(seed), physics.name
+    return physics, "default" if physics == PhysicsParams() else "custom"
 
 
 def generate(
@@ -115,8 +123,10 @@ def generate(
     workers: int = 1,
     progress: Progress | None = None,
     overwrite: bool = False,
+    physics_name: str | None = None,
 ) -> HoardReport:
-    """Make every face of ``plan`` and write the hoard's files."""
+    """Make every face of ``plan`` and write the hoard's files (``physics_name`` goes to hoard.json;
+    default: ``default`` for today's parameters, else ``custom``)."""
     if workers < 1:
         raise ParameterError(f"workers must be at least 1, got {workers}")
     out = Path(out_dir)
@@ -132,7 +142,8 @@ def generate(
     write_json(out / TRUTH_FILE, {"settings": digest(settings), **truth_document(plan, records)})
     seconds = time.perf_counter() - started
     report = HoardReport(out, len(plan.faces), len(todo), len(plan.faces) - len(todo), seconds, workers)
-    write_json(out / HOARD_FILE, _hoard_document(settings, report))
+    name = physics_name or resolve_physics(physics, plan.seed)[1]
+    write_json(out / HOARD_FILE, {**_hoard_document(settings, report), "physics": name})
     shutil.rmtree(out / PARTS_DIR, ignore_errors=True)
     return report
 
@@ -266,8 +277,13 @@ _RECORD_KEYS = ("T_scan_die", "face_seed", "physics", "n_points", "ply_sha256")
 def _make_face(task: _Task, die: Any, face_id: str, die_age: float) -> dict[str, Any]:
     rng = np.random.default_rng(derived_seed(task.seed, "spec", face_id))
     physics = task.physics
+    scanner = scanner_of(physics, task.seed, face_id)
     spec = sample_face_spec(
-        rng, die_age, strike=physics.strike, circulation=physics.circulation, scan=physics.scan
+        rng,
+        die_age,
+        strike=physics.strike,
+        circulation=physics.circulation,
+        scan=physics.all_scanners()[scanner],
     )
     face_seed = derived_seed(task.seed, "face", face_id)
     face = make_face(die, spec, face_id, face_seed)
@@ -279,9 +295,19 @@ def _make_face(task: _Task, die: Any, face_id: str, die_age: float) -> dict[str,
         "n_points": face.scan.n_points,
         "ply_sha256": file_sha256(path),
     }
+    if physics.scanners:
+        record["physics"] = {**face.info, "scanner": scanner}
     record = to_jsonable(record)
     write_json(Path(task.out_dir) / PARTS_DIR / f"{face_id}.json", {**record, "settings": task.settings})
     return record
+
+
+def scanner_of(physics: PhysicsParams, seed: int, face_id: str) -> int:
+    """Index into ``physics.all_scanners()`` of the scanner of a face (drawn per face; 0 with one)."""
+    if not physics.scanners:
+        return 0
+    rng = np.random.default_rng(derived_seed(seed, "scanner", face_id))
+    return int(rng.integers(len(physics.scanners) + 1))
 
 
 @lru_cache(maxsize=4)

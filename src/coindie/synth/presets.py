@@ -170,6 +170,19 @@ def _tiny() -> Preset:
     return Preset("tiny", groups, obverse_only_share=0.0)
 
 
+def _study() -> Preset:
+    """80 faces, 12 dies: 40 coins with both faces, 6 obverse and 6 reverse dies. Every face is in the
+    clustering test split; half the dies of each side are also a registration test set. Sizes are resampled
+    from the experts' real ones within each group, so a few dies are large and some hold one or two coins."""
+    groups = (
+        DieGroup(OBVERSE, 3, 24, (REG_TEST, CLUSTER_TEST)),
+        DieGroup(OBVERSE, 3, 16, (CLUSTER_TEST,)),
+        DieGroup(REVERSE, 3, 22, (REG_TEST, CLUSTER_TEST)),
+        DieGroup(REVERSE, 3, 18, (CLUSTER_TEST,)),
+    )
+    return Preset("study", groups, obverse_only_share=0.0)
+
+
 #: Die sizes (coins per die) of the experts' final labels, as {size: number of dies}: obverses without beard
 #: (experts_obverse_dies.csv: 887 coins, 74 dies) and reverses (experts_reverse_dies.csv: 1,102 coins, 213
 #: dies), from the Riedones3D authors' graph_visualizer repository (CC BY-NC-ND 3.0 data). No sizes are
@@ -241,7 +254,7 @@ def real_die_sizes(family: str) -> list[int]:
 
 
 #: Presets by name.
-PRESETS: dict[str, Preset] = {"riedones": _riedones(), "tiny": _tiny()}
+PRESETS: dict[str, Preset] = {"riedones": _riedones(), "tiny": _tiny(), "study": _study()}
 
 
 def get_preset(name: str, scale: float = 1.0) -> Preset:

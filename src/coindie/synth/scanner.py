@@ -8,17 +8,24 @@
   software's smoothed mesh normals) with a small angular noise, colours from the normals;
 - a random pose: coins are scanned four at a time on a plate, each turned at random about z, tilted a
   few degrees, at one of four positions.
+
+Other scanners and their software (the wide world's axes, off by default): smoothed meshes
+(``smoothing_mm``: the heights diffused over the mesh's neighbours, a Gaussian of that sd), normals
+estimated from the noisy points instead of the mesh (``estimated_normals``: PCA over
+``normal_neighbours`` neighbours, oriented towards the side the surface faces, as software without mesh
+normals gives them), and holes (``hole_share``: a share of the face's vertices missing, in a few blobs).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
-from scipy import ndimage
+from scipy import ndimage, sparse
+from scipy.spatial import cKDTree
 from scipy.spatial.transform import Rotation
 
-from coindie.synth._params import check_ranges, param
+from coindie.synth._params import check_ranges, new_field, param
 from coindie.synth._raster import FloatArray
 from coindie.synth.strike import StrikeSpec, Surface, max_radius, outline_radius
 
@@ -76,9 +83,49 @@ class ScanParams:
     thickness_mm: tuple[float, float] = param(
         (1.6, 2.6), unit="mm", lo=0.0, hi=20.0, pair=True, doc="range of the face's height above the plate"
     )
+    smoothing_mm: float = param(
+        0.0,
+        unit="mm",
+        lo=0.0,
+        hi=0.5,
+        new=True,
+        doc="sd of the mesh smoothing of the scanned heights (Laplacian diffusion over neighbours; 0: raw)",
+    )
+    estimated_normals: float = param(
+        0.0,
+        unit="probability",
+        lo=0.0,
+        hi=1.0,
+        new=True,
+        doc="chance that a face's normals are estimated from its noisy points (PCA) instead of the mesh",
+    )
+    normal_neighbours: int = param(
+        16, unit="count", lo=4, hi=100, new=True, doc="neighbours of the PCA that estimates a normal"
+    )
+    hole_share: tuple[float, float] = param(
+        (0.0, 0.0),
+        unit="fraction",
+        lo=0.0,
+        hi=0.5,
+        pair=True,
+        new=True,
+        doc="range of the share of the face's vertices missing (holes in the scan)",
+    )
+    holes_max: int = param(3, unit="count", lo=1, hi=10, new=True, doc="at most this many hole blobs")
 
     def __post_init__(self) -> None:
         check_ranges(self)
+
+
+@dataclass(frozen=True)
+class Hole:
+    """One blob of missing data: an ellipse (coin frame) of relative ``weight`` (its share of the holes'
+    area), axis ratio ``elongation`` (>= 1), long axis at ``angle_deg``."""
+
+    centre: tuple[float, float]
+    weight: float
+    elongation: float
+    angle_deg: float
 
 
 @dataclass(frozen=True)
@@ -95,6 +142,11 @@ class ScanSpec:
     tilt_deg: float
     tilt_azimuth_deg: float
     position_mm: tuple[float, float, float]
+    smoothing_mm: float = new_field(0.0)
+    estimated_normals: bool = new_field(False)
+    normal_neighbours: int = new_field(16)
+    hole_share: float = new_field(0.0)
+    holes: tuple[Hole, ...] = new_field(())
 
     def T_scan_coin(self) -> FloatArray:
         """4x4 rigid transform from the coin frame to the scanner's frame."""
@@ -106,11 +158,15 @@ class ScanSpec:
         return T
 
 
-def sample_scan(rng: np.random.Generator, params: ScanParams) -> ScanSpec:
-    """Draw one scan from ``params``."""
+def sample_scan(rng: np.random.Generator, params: ScanParams, flan_radius_mm: float = 10.5) -> ScanSpec:
+    """Draw one scan from ``params`` (``flan_radius_mm`` places the holes).
+
+    The wide world's axes are drawn after today's draws and only where they are switched on, so that a
+    scan of the default parameters is the same as before they existed.
+    """
     slot = np.array([[1, 1], [-1, 1], [-1, -1], [1, -1]])[rng.integers(4)] * params.plate_offset_mm
     xy = slot + rng.normal(0.0, params.plate_jitter_mm, 2)
-    return ScanSpec(
+    spec = ScanSpec(
         spacing_mm=params.spacing_mm,
         jitter=params.jitter,
         noise_mm=float(rng.uniform(*params.noise_mm)),
@@ -122,6 +178,29 @@ def sample_scan(rng: np.random.Generator, params: ScanParams) -> ScanSpec:
         tilt_azimuth_deg=float(rng.uniform(0.0, 360.0)),
         position_mm=(float(xy[0]), float(xy[1]), float(rng.uniform(*params.thickness_mm))),
     )
+    p = params.estimated_normals
+    estimated = p >= 1.0 or (p > 0.0 and bool(rng.random() < p))
+    share = float(rng.uniform(*params.hole_share)) if params.hole_share[1] > 0 else 0.0
+    holes = _holes(rng, params, flan_radius_mm) if share > 0 else ()
+    return replace(
+        spec,
+        smoothing_mm=params.smoothing_mm,
+        estimated_normals=estimated,
+        normal_neighbours=params.normal_neighbours if estimated else 16,
+        hole_share=share,
+        holes=holes,
+    )
+
+
+def _holes(rng: np.random.Generator, params: ScanParams, radius: float) -> tuple[Hole, ...]:
+    n = int(rng.integers(1, params.holes_max + 1))
+    weights = rng.dirichlet(np.full(n, 2.0))
+    holes = []
+    for w in weights:
+        r, a = 0.8 * radius * np.sqrt(rng.random()), rng.uniform(0, 2 * np.pi)
+        centre = (float(r * np.cos(a)), float(r * np.sin(a)))
+        holes.append(Hole(centre, float(w), float(rng.uniform(1.0, 2.5)), float(rng.uniform(0, 180))))
+    return tuple(holes)
 
 
 def face_points(
@@ -131,6 +210,8 @@ def face_points(
     xy = _lattice(scan, max_radius(strike), rng)
     inside = outline_radius(strike, np.arctan2(xy[:, 1], xy[:, 0])) - np.hypot(xy[:, 0], xy[:, 1])
     xy = xy[inside > _RIM_GAP * scan.spacing_mm]
+    if scan.holes:
+        xy = xy[~hole_mask(xy, scan)]
     height = surface.height
     gy, gx = np.gradient(height, surface.grid.pitch)
     index = surface.grid.fractional_index(xy)
@@ -138,6 +219,72 @@ def face_points(
     normals = np.column_stack([-dzdx, -dzdy, np.ones(len(xy))])
     normals /= np.linalg.norm(normals, axis=1, keepdims=True)
     return np.column_stack([xy, z]), normals
+
+
+def hole_mask(xy: FloatArray, scan: ScanSpec) -> np.ndarray:
+    """Which of the face's vertices ``xy`` (coin frame) fall in the scan's holes: exactly ``hole_share`` of
+    them (rounded), the ones nearest to a blob's centre in that blob's own metric (ellipses whose areas go
+    as their weights), so the blobs grow together until the share is reached."""
+    n_missing = int(round(scan.hole_share * len(xy)))
+    if n_missing == 0:
+        return np.zeros(len(xy), dtype=bool)
+    distance = np.full(len(xy), np.inf)
+    for hole in scan.holes:
+        a = np.radians(hole.angle_deg)
+        d = xy - np.asarray(hole.centre)
+        along = d @ np.array([np.cos(a), np.sin(a)])
+        across = d @ np.array([-np.sin(a), np.cos(a)])
+        # Area of {along^2 / e + e across^2 <= t^2} is pi t^2: equal t gives areas in proportion to weight.
+        t = np.sqrt(along**2 / hole.elongation + hole.elongation * across**2) / np.sqrt(hole.weight)
+        distance = np.minimum(distance, t)
+    mask = np.zeros(len(xy), dtype=bool)
+    mask[np.argsort(distance, kind="stable")[:n_missing]] = True
+    return mask
+
+
+def smooth_heights(points: FloatArray, sigma_mm: float) -> FloatArray:
+    """The points' heights (z, coin frame) smoothed over the mesh like a scanner software's smoothing: a
+    diffusion over each vertex's 8 nearest neighbours in xy, iterated until it amounts to a Gaussian of sd
+    ``sigma_mm``. Written by hand (a sparse averaging operator applied n times): no library smooths a
+    height function on scattered points. Only heights move, so the outline does not shrink, and the
+    flan's curvature shifts by 2 c sigma^2 (< 0.001 mm), so Taubin's inflating counter-step is not needed.
+    """
+    if sigma_mm <= 0 or len(points) < 9:
+        return points
+    distance, index = cKDTree(points[:, :2]).query(points[:, :2], k=9)
+    distance, index = distance[:, 1:], index[:, 1:]
+    # One step z += lam (mean of neighbours - z) adds lam * <dx^2> = lam * <d^2> / 2 of variance per axis.
+    mean_dx2 = float(np.mean(distance**2)) / 2
+    steps = max(1, int(np.ceil(sigma_mm**2 / (0.5 * mean_dx2))))
+    lam = sigma_mm**2 / (steps * mean_dx2)
+    n = len(points)
+    rows = np.repeat(np.arange(n), 8)
+    average = sparse.csr_matrix((np.full(8 * n, 1 / 8), (rows, index.ravel())), shape=(n, n))
+    step = (1 - lam) * sparse.identity(n, format="csr") + lam * average
+    z = points[:, 2].copy()
+    for _ in range(steps):
+        z = step @ z
+    out = points.copy()
+    out[:, 2] = z
+    return out
+
+
+def estimate_normals(points: FloatArray, reference: FloatArray, k: int) -> FloatArray:
+    """Normals estimated from the points alone: the direction of least spread (PCA) of each point's ``k``
+    nearest neighbours, turned to the side of ``reference`` (the surface's true normals: the side the
+    scanner saw, as a viewpoint orientation gives it)."""
+    k = min(k, len(points))
+    tree = cKDTree(points)
+    normals = np.empty_like(points)
+    for start in range(0, len(points), 65536):
+        block = slice(start, start + 65536)
+        _, index = tree.query(points[block], k=k)
+        near = points[index] - points[index].mean(axis=1, keepdims=True)
+        _, vectors = np.linalg.eigh(np.einsum("nki,nkj->nij", near, near))
+        normals[block] = vectors[:, :, 0]
+    flip = np.einsum("ij,ij->i", normals, reference) < 0
+    normals[flip] *= -1
+    return normals
 
 
 def _lattice(scan: ScanSpec, radius: float, rng: np.random.Generator) -> FloatArray:

@@ -54,8 +54,24 @@ class StrikeParams:
     off_centre_mm: float = param(
         0.8, unit="mm", lo=0.0, hi=8.0, doc="Rayleigh scale of the distance between flan and design centres"
     )
+    off_centre_max_share: float = param(
+        1.0,
+        unit="fraction",
+        lo=0.0,
+        hi=1.0,
+        new=True,
+        doc="the distance between flan and design centres is clipped to this share of the flan's diameter",
+    )
     cup_mm: float = param(
         0.02, unit="mm", lo=0.0, hi=1.0, doc="sd of the flan's extra cupping (+) or doming (-) at 10 mm"
+    )
+    cup_added_mm: float = param(
+        0.0,
+        unit="mm",
+        lo=0.0,
+        hi=1.0,
+        new=True,
+        doc="each coin's cupping at 10 mm changed by U(-a, a), drawn after all else (same coins, recupped)",
     )
     weak_probability: float = param(0.4, unit="probability", lo=0.0, hi=1.0, doc="chance of weak zones")
     weak_zones_max: int = param(2, unit="count", lo=1, hi=8, doc="at most this many weak zones")
@@ -192,11 +208,10 @@ def sample_strike(rng: np.random.Generator, params: StrikeParams) -> StrikeSpec:
         for k in range(2, OUTLINE_HARMONICS + 1)
     )
     a = rng.uniform(0, 2 * np.pi)
-    offset = (
-        rng.rayleigh(params.off_centre_mm) * np.array([np.cos(a), np.sin(a)])
-        if params.off_centre_mm
-        else (0, 0)
-    )
+    distance = rng.rayleigh(params.off_centre_mm) if params.off_centre_mm else 0.0
+    if params.off_centre_max_share < 1.0:
+        distance = min(distance, params.off_centre_max_share * 2 * radius)
+    offset = distance * np.array([np.cos(a), np.sin(a)]) if params.off_centre_mm else (0, 0)
     return StrikeSpec(
         flan_radius_mm=float(radius),
         outline=outline,
@@ -444,3 +459,17 @@ def bend_points(bend: Bend, points: FloatArray, normals: FloatArray) -> tuple[Fl
 def _smoothstep(x: FloatArray) -> FloatArray:
     x = np.clip(x, 0.0, 1.0)
     return x * x * (3.0 - 2.0 * x)
+
+
+# --- measures of a drawn strike (for the wide world's documented ranges) -----------------------------------
+
+
+def weak_share(spec: StrikeSpec, pitch: float = 0.1) -> float:
+    """Share of the flan (inside its outline) that lies in some weak zone (within a zone's radius)."""
+    grid = coin_grid(spec, pitch)
+    X, Y = grid.coords()
+    on_flan = _inside_depth(spec, X, Y) > 0
+    weak = np.zeros(X.shape, dtype=bool)
+    for zone in spec.weak:
+        weak |= (X - zone.centre[0]) ** 2 + (Y - zone.centre[1]) ** 2 < zone.radius_mm**2
+    return float((weak & on_flan).sum() / max(int(on_flan.sum()), 1))

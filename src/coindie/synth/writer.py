@@ -18,7 +18,7 @@ import csv
 import hashlib
 import json
 import math
-from dataclasses import asdict, is_dataclass
+from dataclasses import fields, is_dataclass
 from enum import Enum
 from pathlib import Path
 from typing import Any
@@ -41,9 +41,18 @@ SPLITS_HEADER = ("face_id", "split")
 
 
 def to_jsonable(value: Any) -> Any:
-    """Plain JSON types from dataclasses, enums, numpy arrays and scalars, tuples, paths."""
+    """Plain JSON types from dataclasses, enums, numpy arrays and scalars, tuples, paths.
+
+    A dataclass field marked ``omit_default`` (the wide world's axes, added after hoards were first made) is
+    left out while it holds its default, so that the records and settings digest of a hoard made without
+    those axes stay byte-identical to what earlier versions wrote.
+    """
     if is_dataclass(value) and not isinstance(value, type):
-        return to_jsonable(asdict(value))
+        return {
+            f.name: to_jsonable(getattr(value, f.name))
+            for f in fields(value)
+            if not (f.metadata.get("omit_default") and getattr(value, f.name) == f.default)
+        }
     if isinstance(value, dict):
         return {str(k): to_jsonable(v) for k, v in value.items()}
     if isinstance(value, list | tuple):
