@@ -55,10 +55,11 @@ def estimate_command(
     console = Console()
     for side, est in estimates.items():
         c, cov = est.counts, est.coverage
-        table = Table(
-            title=f"{SIDES.get(side, 'faces of no known side')} dies of {source}: n = {c.n} coins, d = {c.d} "
+        typer.echo(
+            f"{SIDES.get(side, 'faces of no known side')} dies of {source}: n = {c.n} coins, d = {c.d} "
             f"dies, d1 = {c.d1}, d2 = {c.d2}; coverage {cov.value:.3f} ({cov.low:.3f}-{cov.high:.3f})"
         )
+        table = Table()
         table.add_column("estimator")
         table.add_column("dies", justify="right")
         table.add_column(f"{confidence:.0%} interval", justify="right")
