@@ -217,7 +217,8 @@ def draw_die_links(
     """The diagram: obverse dies on the upper row, reverse dies on the lower, chains side by side (largest
     first) with their dies in seriation order; a link's width grows with its coins, a die's marker with
     its coins. Dies with no link (their coins have one face only) are left out and counted in the title.
-    The format follows the suffix (``.svg``, ``.png``, ``.pdf``); returns the figure's path."""
+    Chains that do not fit beside the largest one wrap onto further bands. The format follows the
+    suffix (``.svg``, ``.png``, ``.pdf``); returns the figure's path."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -225,27 +226,35 @@ def draw_die_links(
 
     g = links.graph
     linked = [c for c in links.chains if c.n_links]
+    widths = [max(len(c.obverses), len(c.reverses)) for c in linked]
+    # Chains side by side, wrapped onto bands no wider than the largest chain (at least 40 dies).
+    band_width = max([*widths, min(40, sum(widths) + len(widths) - 1)]) if widths else 1
     x: dict[str, float] = {}
-    start = 0.0
+    band_of: dict[str, int] = {}
     bounds = []
-    for chain in linked:
-        width = max(len(chain.obverses), len(chain.reverses))
+    band, start = 0, 0.0
+    for chain, width in zip(linked, widths, strict=True):
+        if start > 0 and start + width > band_width:
+            band, start = band + 1, 0.0
         for row in (chain.obverses, chain.reverses):  # each row spread evenly over the chain's width
             for i, node in enumerate(row):
                 x[node] = start - 0.5 + (i + 0.5) * width / len(row)
-        bounds.append((start - 0.5, start + width - 0.5, chain))
+                band_of[node] = band
+        bounds.append((start - 0.5, start + width - 0.5, band, chain))
         start += width + 1.0
-    total = max(start - 1.0, 1.0)
-    fig_w = min(max_width_in, max(6.0, 0.16 * total + 1.5))
-    fig, ax = plt.subplots(figsize=(fig_w, 3.2))
-    y = {OBVERSE: 1.0, REVERSE: 0.0}
+    n_bands = band + 1
+    fig_w = min(max_width_in, max(6.0, 0.16 * band_width + 1.5))
+    fig, ax = plt.subplots(figsize=(fig_w, 0.6 + 2.0 * n_bands))
+    step = 1.8  # vertical distance between bands
+
+    def y(node: str) -> float:
+        return (1.0 if g.nodes[node]["side"] == OBVERSE else 0.0) - step * band_of[node]
+
     top = max((w for _, _, w in g.edges(data="weight")), default=1)
     for o, r, w in g.edges(data="weight"):
-        if g.nodes[o]["side"] != OBVERSE:
-            o, r = r, o
         ax.plot(
             [x[o], x[r]],
-            [1.0, 0.0],
+            [y(o), y(r)],
             color=LINK_COLOUR,
             alpha=0.55,
             lw=0.4 + 3.6 * w / top,
@@ -254,35 +263,38 @@ def draw_die_links(
         )
     for side, colour in ((OBVERSE, OBVERSE_COLOUR), (REVERSE, REVERSE_COLOUR)):
         nodes = [n for n in x if g.nodes[n]["side"] == side]
+        sizes = [8 + 4 * g.nodes[n]["coins"] for n in nodes]
         ax.scatter(
             [x[n] for n in nodes],
-            [y[side]] * len(nodes),
-            s=[8 + 4 * g.nodes[n]["coins"] for n in nodes],
+            [y(n) for n in nodes],
+            s=sizes,
             color=colour,
             zorder=2,
             edgecolors="white",
             linewidths=0.4,
             label=f"{side} dies",
         )
-    for low, high, chain in bounds:
+    for low, high, b, chain in bounds:
+        base = -step * b
         if len(linked) > 1:
-            ax.axvspan(low, high, color="#f0ebe4" if chain.index % 2 else "#e4ebf0", zorder=0, lw=0)
-        if high - low >= 2 or len(linked) <= 30:
-            ax.text((low + high) / 2, -0.28, str(chain.index), ha="center", va="top", fontsize=6)
-    if total < 80:
+            colour = "#f0ebe4" if chain.index % 2 else "#e4ebf0"
+            ax.fill_between([low, high], base - 0.2, base + 1.2, color=colour, zorder=0, lw=0)
+        ax.text((low + high) / 2, base - 0.24, str(chain.index), ha="center", va="top", fontsize=6)
+    if band_width < 80:
         for node, pos in x.items():
-            side = g.nodes[node]["side"]
+            obverse = g.nodes[node]["side"] == OBVERSE
             ax.text(
                 pos,
-                y[side] + (0.09 if side == OBVERSE else -0.09),
+                y(node) + (0.09 if obverse else -0.09),
                 g.nodes[node]["die"],
                 ha="center",
-                va="bottom" if side == OBVERSE else "top",
+                va="bottom" if obverse else "top",
                 fontsize=6,
             )
-    ax.set_xlim(-1, total)
-    ax.set_ylim(-0.45, 1.3)
-    ax.set_yticks([0, 1], ["reverse", "obverse"])
+    ax.set_xlim(-1, band_width)
+    ax.set_ylim(-step * (n_bands - 1) - 0.45, 1.3)
+    ticks = [v for b in range(n_bands) for v in (-step * b, 1 - step * b)]
+    ax.set_yticks(ticks, ["reverse", "obverse"] * n_bands, fontsize=7)
     ax.set_xticks([])
     for spine in ax.spines.values():
         spine.set_visible(False)
@@ -291,13 +303,13 @@ def draw_die_links(
     heading = title or "Die links"
     ax.set_title(
         f"{heading}: {s['obverse_dies']} obverse and {s['reverse_dies']} reverse dies, {s['combinations']} "
-        f"combinations on {s['coins_with_both_faces']} coins, {len(linked)} chains (numbered below)"
-        + (f"; {unlinked} dies without a linked coin not drawn" if unlinked else ""),
+        f"combinations on {s['coins_with_both_faces']} coins, {len(linked)} chain{'s' * (len(linked) != 1)} "
+        "(numbered below)" + (f"; {unlinked} dies without a linked coin not drawn" if unlinked else ""),
         fontsize=8,
     )
     fig.tight_layout()
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=150)
+    fig.savefig(path, dpi=120)
     plt.close(fig)
     return path

@@ -48,6 +48,7 @@ figure img { display: block; background: #fff; }
 .singletons { display: flex; flex-wrap: wrap; gap: 10px; }
 .singletons .plate { margin: 0; padding: 0.3em 0.6em; }
 img.wide { max-width: 100%; }
+.curves { display: flex; gap: 1%; } .curves img { width: 49.5%; }
 @media print { body { margin: 0.5cm; max-width: none; } h2 { page-break-before: auto; } }
 """
 
@@ -280,15 +281,17 @@ def build_report(
         "<h2>The study</h2>", _parameters(project_folder, method, tau),
         "<h2>How many dies: estimates</h2>", _estimates_table(analysis),
     ]  # fmt: skip
-    for key, uri in figures.items():
-        if key.startswith("accumulation"):
-            body.append(f'<p><img class="wide" src="{uri}" alt="{escape(key)}"></p>')
+    curves = [
+        f'<img src="{uri}" alt="{escape(key)}">' for key, uri in figures.items() if key.startswith("accum")
+    ]
+    body.append(f'<div class="curves">{"".join(curves)}</div>')
     if analysis.links is not None:
         s = analysis.links.summary()
         body += [
             "<h2>Die links</h2>",
             f"<p>{s['obverse_dies']} obverse and {s['reverse_dies']} reverse dies, {s['combinations']} "
-            f"combinations on {s['coins_with_both_faces']} coins with both faces, {s['chains']} chains. Dies "
+            f"combinations on {s['coins_with_both_faces']} coins with both faces, {s['chains']} "
+            f"chain{'s' * (s['chains'] != 1)}. Dies "
             "within a chain are in spectral seriation order (Fiedler vector of the weighted link graph).</p>",
             f'<p><img class="wide" src="{figures["diagram_svg"]}" alt="die-link diagram"></p>',
         ]
