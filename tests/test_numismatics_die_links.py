@@ -94,3 +94,25 @@ def test_the_experts_labels_give_the_published_counts() -> None:
     links = build_die_links(obverse, reverse)
     assert len(links.coins) == 881 and links.n_links == 326
     assert sum(w for _, _, w in links.graph.edges(data="weight")) == 881
+
+
+@pytest.mark.skipif(not RIEDONES3D.is_dir(), reason=f"real Riedones3D labels not found at {RIEDONES3D}")
+def test_the_worked_example_is_one_command(tmp_path) -> None:
+    import importlib.util
+    from pathlib import Path
+
+    script = Path(__file__).resolve().parents[1] / "benchmarks" / "numismatics_riedones.py"
+    spec = importlib.util.spec_from_file_location("numismatics_riedones", script)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    docs = tmp_path / "docs"
+    docs.mkdir()
+    (docs / "numismatics.md").write_text(f"# kept\n\n{module.BEGIN}\nold\n{module.END}\n\nreading kept\n")
+    assert module.main(["--data", str(RIEDONES3D), "--out", str(tmp_path / "out"), "--docs", str(docs)]) == 0
+    text = (docs / "numismatics.md").read_text()
+    assert text.startswith("# kept") and text.endswith("reading kept\n") and "\nold\n" not in text
+    assert "| faces labelled (n) | 887 | 1102 |" in text and "| dies (d) | 74 | 213 |" in text
+    assert "in 326 distinct combinations" in text
+    for name in ("die_links", "accumulation_obverse", "accumulation_reverse"):
+        assert (docs / "images" / f"numismatics_riedones_{name}.png").stat().st_size > 10_000
+    assert (tmp_path / "out" / "die_links.gexf").is_file()

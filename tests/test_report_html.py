@@ -5,6 +5,7 @@ aligned PLY models per die lie on their reference."""
 
 from __future__ import annotations
 
+import json
 import re
 from pathlib import Path
 
@@ -84,18 +85,23 @@ def test_chained_transforms_match_the_hoards_truth(study) -> None:
     assert checked >= 6
 
 
-def test_report_has_one_plate_per_die_with_embedded_images(study, tmp_path) -> None:
-    project = open_project(study / "project")
+@pytest.fixture(scope="module")
+def report(study) -> Path:
+    """The report, built once, after an expert verified one obverse die."""
+    first_die = next(iter(project_dies(study / "project")["D"].members().values()))
+    open_project(study / "project").add_edit("expert", "verify", a=first_die[0])
+    return build_report(study / "project", study / "report.html", metadata=study / "coins.csv")
+
+
+def test_report_has_one_plate_per_die_with_embedded_images(study, report) -> None:
     dies = project_dies(study / "project")
-    first_die = next(iter(dies["D"].members().values()))
-    project.add_edit("expert", "verify", a=first_die[0])
-    out = build_report(study / "project", tmp_path / "report.html", metadata=study / "coins.csv")
+    out = report
     html = out.read_text()
     plates = re.findall(r'<section class="plate[^"]*" data-side="(\w)" data-die="([^"]+)"', html)
     expected = {(side, die) for side, d in dies.items() for die in d.members()}
     assert sorted(plates) == sorted(expected) and len(plates) == len(expected)
     n_faces = sum(len(d.dies) for d in dies.values())
-    assert html.count('src="data:image/png;base64,') == n_faces
+    assert html.count('src="data:image/jpeg;base64,') == n_faces
     assert 'src="http' not in html and "file://" not in html  # self-contained
     assert html.count('class="verified"') == 1
     assert "mean weight 3.2 (n = 2)" in html or "mean weight 3.1" in html
@@ -104,8 +110,8 @@ def test_report_has_one_plate_per_die_with_embedded_images(study, tmp_path) -> N
 
 
 @pytest.mark.skipif(chromium_binary() is None, reason=NO_CHROMIUM)
-def test_report_renders_in_headless_chromium(study, tmp_path) -> None:
-    html = build_report(study / "project", tmp_path / "report.html", width_px=120)
+def test_report_renders_in_headless_chromium(report, tmp_path) -> None:
+    html = report
     pdf = print_pdf(html, tmp_path / "report.pdf")
     head = pdf.read_bytes()[:5]
     assert head == b"%PDF-" and pdf.stat().st_size > 50_000  # the plates' images are in it
@@ -121,7 +127,8 @@ def test_report_renders_in_headless_chromium(study, tmp_path) -> None:
 
 def test_cli_report_and_export_dies(study, tmp_path) -> None:
     runner = CliRunner()
-    result = runner.invoke(app, ["report", str(study / "project"), "-o", str(tmp_path / "r.html")])
+    args = ["report", str(study / "project"), "-o", str(tmp_path / "r.html"), "--width-px", "64"]
+    result = runner.invoke(app, args)
     assert result.exit_code == 0, result.output
     assert (tmp_path / "r.html").stat().st_size > 10_000
     result = runner.invoke(app, ["export", "dies", str(study / "project"), str(tmp_path / "dies")])
@@ -138,5 +145,10 @@ def test_cli_report_and_export_dies(study, tmp_path) -> None:
                     continue
                 distance, _ = tree.query(read_scan(folder / f"{face}.ply").points)
                 assert np.median(distance) < 0.1, (face, np.median(distance))  # on the reference's relief
+    estimate = runner.invoke(app, ["estimate", str(study / "project"), "--json"])
+    assert estimate.exit_code == 0, estimate.output
+    sides = json.loads(estimate.output)
+    assert sides["obverse"]["n"] == 8 and sides["reverse"]["n"] == 8  # every face of the tiny hoard
+    assert sides["obverse"]["d"] == len(project_dies(study / "project")["D"].members())
     bad = runner.invoke(app, ["report", str(tmp_path)])
     assert bad.exit_code == 2 and "not a coindie project" in bad.output

@@ -19,6 +19,8 @@ Sources, and what is by hand:
   model: each die's number of coins in the sample is geometric, ``P(r) = (1 - q) q**r`` (dies that break
   at a constant rate, hence exponential outputs). Its estimate follows from the model by the method of
   moments: the observed dies' mean ``n/d = 1/(1 - q)``, so ``q = 1 - d/n`` and ``D = d/q = n d / (n - d)``.
+  The same formula is stated, as the estimate for an exponential die-frequency distribution (a constant
+  breakage rate), in D. Hamilton's notes "Estimating die numbers" / "Numbered die issues" (glebecoins.net).
   We could not consult Esty's printed interval; the interval here is a parametric bootstrap under the same
   fitted model (written by hand: no library has it).
 - Chao1, bias-corrected, ``D = d + d1 (d1 - 1) / (2 (d2 + 1))``, with its log-normal interval: A. Chao,
