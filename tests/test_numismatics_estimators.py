@@ -125,6 +125,9 @@ def test_every_singleton_and_carter_are_reported_not_invented() -> None:
     carter = result.get("Carter (1983)")
     assert carter.value is None and "could not be sourced" in carter.note
     assert result.to_dict()["n"] == 3
+    # one doubleton and many singletons: the coverage interval reaches 0, d/C's upper end is unbounded
+    wide = good_estimate([1] * 9 + [2])
+    assert wide.high == math.inf and wide.to_dict()["high"] == "inf"
 
 
 def test_accumulation_curve_and_extrapolation(tmp_path) -> None:

@@ -150,5 +150,9 @@ def test_cli_report_and_export_dies(study, tmp_path) -> None:
     sides = json.loads(estimate.output)
     assert sides["obverse"]["n"] == 8 and sides["reverse"]["n"] == 8  # every face of the tiny hoard
     assert sides["obverse"]["d"] == len(project_dies(study / "project")["D"].members())
+    auto = runner.invoke(app, ["estimate", str(study / "project"), "--auto", "--json"])
+    assert auto.exit_code == 0 and json.loads(auto.output)["reverse"]["n"] == 8
+    both = runner.invoke(app, ["estimate", str(study / "project"), "--auto", "--threshold", "0.5"])
+    assert both.exit_code == 2 and "not both" in both.output
     bad = runner.invoke(app, ["report", str(tmp_path)])
     assert bad.exit_code == 2 and "not a coindie project" in bad.output

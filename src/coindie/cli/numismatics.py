@@ -18,6 +18,9 @@ app.add_typer(export, name="export")
 ThresholdOption = Annotated[
     float | None, typer.Option(help="For a project: links above it join faces (default: the paper's 0.95).")
 ]
+AutoOption = Annotated[
+    bool, typer.Option("--auto", help="For a project: each side's threshold by best silhouette (no labels).")
+]
 MethodOption = Annotated[
     str, typer.Option(help="For a project: components (the paper's), average or leiden.")
 ]
@@ -39,6 +42,7 @@ def estimate_command(
     confidence: Annotated[float, typer.Option(help="Level of the intervals.")] = 0.95,
     threshold: ThresholdOption = None,
     method: MethodOption = "components",
+    auto: AutoOption = False,
 ) -> None:
     """The original number of dies: n, d, d1, d2, coverage and every estimator with its interval, per side."""
     from rich.console import Console
@@ -47,7 +51,7 @@ def estimate_command(
     from coindie.numismatics.analysis import side_estimates
     from coindie.numismatics.sources import SIDES, load_dies
 
-    sides = load_dies(source, method=method, threshold=threshold)
+    sides = load_dies(source, method=method, threshold=threshold, auto=auto)
     estimates = side_estimates(sides, confidence)
     if as_json:
         typer.echo(json.dumps({SIDES.get(s, s): e.to_dict() for s, e in estimates.items()}))
@@ -84,6 +88,7 @@ def dielinks_command(
     ] = Path("dielinks"),
     threshold: ThresholdOption = None,
     method: MethodOption = "components",
+    auto: AutoOption = False,
     as_json: Annotated[bool, typer.Option("--json", help="Print the summary as JSON.")] = False,
 ) -> None:
     """The die-link network (obverse die <-> reverse die, weighted by coins), its chains in seriation order,
@@ -94,11 +99,11 @@ def dielinks_command(
     if reverse is None:
         if not is_project(obverse):
             raise ParameterError("give the obverse and the reverse cluster CSVs, or one project")
-        sides = {s: load_side(obverse, s, method=method, threshold=threshold) for s in "DR"}
+        sides = {s: load_side(obverse, s, method=method, threshold=threshold, auto=auto) for s in "DR"}
     else:
         sides = {
-            "D": load_side(obverse, "D", method=method, threshold=threshold),
-            "R": load_side(reverse, "R", method=method, threshold=threshold),
+            "D": load_side(obverse, "D", method=method, threshold=threshold, auto=auto),
+            "R": load_side(reverse, "R", method=method, threshold=threshold, auto=auto),
         }
     result = analyse(sides, out)
     summary = result.links.summary() if result.links else {}
@@ -128,6 +133,7 @@ def report_command(
     ] = None,
     threshold: ThresholdOption = None,
     method: MethodOption = "components",
+    auto: AutoOption = False,
     width_px: Annotated[int, typer.Option(help="Width of each relief on the plates.")] = 240,
 ) -> None:
     """The die catalogue as a self-contained HTML report (and PDF): per die a plate of its coins' reliefs
@@ -137,7 +143,7 @@ def report_command(
 
     with counting_progress("faces") as progress:
         path = build_report(
-            project, out, metadata=metadata, threshold=threshold, method=method, width_px=width_px,
+            project, out, metadata=metadata, threshold=threshold, method=method, auto=auto, width_px=width_px,
             progress=progress,
         )  # fmt: skip
     typer.echo(f"{path}: report written")
@@ -152,6 +158,7 @@ def export_dies_command(
     out: Annotated[Path, typer.Argument(help="Folder: one sub-folder of aligned PLY models per die.")],
     threshold: ThresholdOption = None,
     method: MethodOption = "components",
+    auto: AutoOption = False,
 ) -> None:
     """Every face of each die, moved into its reference coin's frame (transforms chained along the best
     links), as PLY files: OUT/<side>_<die>/<face>.ply."""
@@ -159,5 +166,7 @@ def export_dies_command(
     from coindie.report.alignment import export_aligned_dies
 
     with counting_progress("faces") as progress:
-        written = export_aligned_dies(project, out, threshold=threshold, method=method, progress=progress)
+        written = export_aligned_dies(
+            project, out, threshold=threshold, method=method, auto=auto, progress=progress
+        )
     typer.echo(f"{out}: {sum(len(v) for v in written.values())} faces of {len(written)} dies written")

@@ -67,7 +67,8 @@ class Estimate:
     note: str = ""
 
     def to_dict(self) -> dict[str, object]:
-        return asdict(self)
+        """As a dictionary; an infinite bound becomes the string ``"inf"`` (JSON has no infinity)."""
+        return {k: "inf" if isinstance(v, float) and math.isinf(v) else v for k, v in asdict(self).items()}
 
 
 @dataclass(frozen=True)

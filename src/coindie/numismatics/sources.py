@@ -54,34 +54,41 @@ def is_project(path: Path) -> bool:
 
 
 def project_dies(
-    folder: str | Path, method: str = "components", threshold: float | None = None
+    folder: str | Path, method: str = "components", threshold: float | None = None, auto: bool = False
 ) -> dict[str, SideDies]:
-    """The project's die clusters per side, as ``coindie cluster PROJECT`` makes them."""
-    from coindie.clustering import PAPER_THRESHOLD, cluster
+    """The project's die clusters per side, as ``coindie cluster PROJECT`` makes them: at ``threshold``
+    (the paper's 0.95 by default) or, with ``auto``, at each side's threshold of best silhouette
+    (``coindie cluster --auto``)."""
+    from coindie.clustering import PAPER_THRESHOLD, cluster, select_threshold_unsupervised
     from coindie.project import open_project
 
+    if auto and threshold is not None:
+        raise ParameterError("give a threshold or auto, not both")
     project = open_project(folder)
-    tau = PAPER_THRESHOLD if threshold is None else threshold
     out: dict[str, SideDies] = {}
     for side in SIDES:
         graph = project.probability_graph(side)
         if graph.n_nodes == 0:
             continue
+        tau = PAPER_THRESHOLD if threshold is None else threshold
+        how = "the paper's" if threshold is None else "given"
+        if auto and graph.n_nodes >= 3:
+            tau, how = select_threshold_unsupervised(graph, method).threshold, "best silhouette"
         clusters = cluster(graph, method, tau)
         labels = {face: f"{side}{label}" for face, label in clusters.labels.items()}
-        out[side] = SideDies(side, labels, f"{project.folder} ({method}, threshold {tau:g})")
+        out[side] = SideDies(side, labels, f"{project.folder} ({method}, threshold {tau:g}, {how})")
     return out
 
 
 def load_dies(
-    path: str | Path, method: str = "components", threshold: float | None = None
+    path: str | Path, method: str = "components", threshold: float | None = None, auto: bool = False
 ) -> dict[str, SideDies]:
     """Dies per side from a project folder or a label / cluster CSV."""
     from coindie.clustering import read_clusters
 
     path = Path(path)
     if is_project(path):
-        return project_dies(path, method, threshold)
+        return project_dies(path, method, threshold, auto)
     if path.is_dir():
         raise ParameterError(f"{path}: a folder but not a coindie project (no project.sqlite)")
     return split_by_side(read_clusters(path), str(path))

@@ -89,12 +89,13 @@ def project_alignments(
     *,
     threshold: float | None = None,
     method: str = "components",
+    auto: bool = False,
 ) -> dict[str, list[DieAlignment]]:
     """Per side, the alignment of every die of the project's clusters (largest die first)."""
     from coindie.project import open_project
 
     project = open_project(project_folder)
-    sides = sides or project_dies(project_folder, method, threshold)
+    sides = sides or project_dies(project_folder, method, threshold, auto)
     out: dict[str, list[DieAlignment]] = {}
     for side, dies in sides.items():
         graph = _pair_graph(project.scored_pairs(side=side))
@@ -115,6 +116,7 @@ def export_aligned_dies(
     *,
     threshold: float | None = None,
     method: str = "components",
+    auto: bool = False,
     progress: Progress | None = None,
 ) -> dict[str, list[Path]]:
     """``OUT/<side>_<die>/<face>.ply`` for every face, in its die's reference frame (the reference's own
@@ -123,7 +125,7 @@ def export_aligned_dies(
     from coindie.errors import CoinDieError
     from coindie.io import read_scan, write_ply
 
-    alignments = project_alignments(project_folder, threshold=threshold, method=method)
+    alignments = project_alignments(project_folder, threshold=threshold, method=method, auto=auto)
     paths = scan_paths(project_folder)
     out = Path(out_dir)
     total = sum(len(a.faces) for dies in alignments.values() for a in dies)

@@ -222,7 +222,7 @@ def _estimates_table(analysis) -> str:  # noqa: ANN001 (Analysis)
     return "".join(rows)
 
 
-def _parameters(project_folder: Path, method: str, threshold: float) -> str:
+def _parameters(project_folder: Path, sides: dict[str, SideDies]) -> str:
     from coindie.project import open_project
 
     project = open_project(project_folder)
@@ -231,7 +231,7 @@ def _parameters(project_folder: Path, method: str, threshold: float) -> str:
         ("project", str(project.folder)),
         ("coindie", __version__),
         ("date", datetime.now(UTC).strftime("%Y-%m-%d %H:%M UTC")),
-        ("clustering", f"{method}, threshold {threshold:g}"),
+        *((f"{SIDES.get(side, side)} clusters", d.source) for side, d in sides.items()),
         ("faces", str(len(project.scans("ok")))),
         ("edits in the log", str(len(project.edits()))),
     ]
@@ -258,18 +258,17 @@ def build_report(
     metadata: str | Path | None = None,
     threshold: float | None = None,
     method: str = "components",
+    auto: bool = False,
     width_px: int = 240,
     progress: Progress | None = None,
 ) -> Path:
     """Write the report (module docstring) to ``out`` and return its path."""
-    from coindie.clustering import PAPER_THRESHOLD
     from coindie.project import open_project
 
     project_folder = Path(project_folder)
     out = Path(out)
-    tau = PAPER_THRESHOLD if threshold is None else threshold
     meta = read_metadata(metadata) if metadata is not None else None
-    sides: dict[str, SideDies] = project_dies(project_folder, method, tau)
+    sides: dict[str, SideDies] = project_dies(project_folder, method, threshold, auto)
     with tempfile.TemporaryDirectory(prefix="coindie-report-") as scratch:
         analysis = analyse(sides, scratch, formats=("svg",), title="Die links")
         figures = {key: file_uri(path) for key, path in analysis.files.items() if path.suffix == ".svg"}
@@ -280,7 +279,7 @@ def build_report(
         progress(0, sum(len(a.faces) for dies in alignments.values() for a in dies))
     body = [
         f"<h1>Die study of {escape(project_folder.resolve().name)}</h1>",
-        "<h2>The study</h2>", _parameters(project_folder, method, tau),
+        "<h2>The study</h2>", _parameters(project_folder, sides),
         "<h2>How many dies: estimates</h2>", _estimates_table(analysis),
     ]  # fmt: skip
     curves = [
