@@ -154,5 +154,8 @@ def test_cli_report_and_export_dies(study, tmp_path) -> None:
     assert auto.exit_code == 0 and json.loads(auto.output)["reverse"]["n"] == 8
     both = runner.invoke(app, ["estimate", str(study / "project"), "--auto", "--threshold", "0.5"])
     assert both.exit_code == 2 and "not both" in both.output
+    init_project(tmp_path / "unrun", study / "hoard")
+    unrun = runner.invoke(app, ["estimate", str(tmp_path / "unrun")])
+    assert unrun.exit_code == 2 and "coindie run" in unrun.output
     bad = runner.invoke(app, ["report", str(tmp_path)])
     assert bad.exit_code == 2 and "not a coindie project" in bad.output

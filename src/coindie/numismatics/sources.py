@@ -77,6 +77,10 @@ def project_dies(
         clusters = cluster(graph, method, tau)
         labels = {face: f"{side}{label}" for face, label in clusters.labels.items()}
         out[side] = SideDies(side, labels, f"{project.folder} ({method}, threshold {tau:g}, {how})")
+    if not out:
+        raise ParameterError(
+            f"{project.folder}: no usable faces yet (prepare and score them with coindie run)"
+        )
     return out
 
 
