@@ -125,6 +125,19 @@ def numbers_block(result) -> str:  # noqa: ANN001 (Analysis)
     ]
     for chain in [c for c in links.chains if c.n_links][:10]:
         lines.append(f"| {chain.index} | {len(chain.obverses)} | {len(chain.reverses)} | {chain.n_coins} |")
+    import numpy as np
+
+    from coindie.numismatics.die_links import link_spread
+
+    chain = links.chains[0]
+    rng = np.random.default_rng(0)
+    shuffled = [link_spread(g, list(rng.permutation(chain.order))) for _ in range(200)]
+    lines += [
+        "",
+        f"Seriation of chain 1: in its spectral order of {len(chain.order)} dies, the two dies of a link lie "
+        f"on average {link_spread(g, chain.order):.1f} positions apart (weighted by coins), against "
+        f"{np.mean(shuffled):.1f} for random orders of the same dies (smallest of 200: {min(shuffled):.1f}).",
+    ]
     lines += [
         "",
         "![The die-link network of the experts' dies](images/numismatics_riedones_die_links.png)",

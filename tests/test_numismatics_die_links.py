@@ -9,7 +9,7 @@ import random
 import networkx as nx
 import pytest
 
-from coindie.numismatics.die_links import build_die_links, draw_die_links, write_exports
+from coindie.numismatics.die_links import build_die_links, draw_die_links, link_spread, write_exports
 from coindie.numismatics.metadata import read_metadata
 from coindie.numismatics.sources import load_side
 from real_data import RIEDONES3D
@@ -57,6 +57,9 @@ def test_seriation_recovers_a_shuffled_sequence_of_dies() -> None:
     assert chain.obverses in (expected, expected[::-1])
     expected_r = [f"R:{r}" for r in rnames]
     assert chain.reverses in (expected_r, expected_r[::-1])
+    # obverse i sits between reverses i and i+1: every link is one or two positions long
+    assert 1 <= link_spread(links.graph, chain.order) <= 2
+    assert link_spread(links.graph, sorted(chain.order)) > link_spread(links.graph, chain.order)
 
 
 def test_exports_read_back(tmp_path) -> None:
@@ -112,7 +115,7 @@ def test_the_worked_example_is_one_command(tmp_path) -> None:
     text = (docs / "numismatics.md").read_text()
     assert text.startswith("# kept") and text.endswith("reading kept\n") and "\nold\n" not in text
     assert "| faces labelled (n) | 887 | 1102 |" in text and "| dies (d) | 74 | 213 |" in text
-    assert "in 326 distinct combinations" in text
+    assert "in 326 distinct combinations" in text and "Seriation of chain 1" in text
     for name in ("die_links", "accumulation_obverse", "accumulation_reverse"):
         assert (docs / "images" / f"numismatics_riedones_{name}.png").stat().st_size > 10_000
     assert (tmp_path / "out" / "die_links.gexf").is_file()

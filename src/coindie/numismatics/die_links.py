@@ -144,6 +144,15 @@ def seriate(graph: nx.Graph) -> list[str]:
     return order
 
 
+def link_spread(graph: nx.Graph, order: list[str]) -> float:
+    """Coin-weighted mean distance, in positions of ``order``, between the two dies of each link: how well
+    an order keeps linked dies together (the quantity spectral seriation makes small)."""
+    position = {node: i for i, node in enumerate(order)}
+    edges = [(a, b, w) for a, b, w in graph.subgraph(order).edges(data="weight")]
+    total = sum(w for _, _, w in edges)
+    return sum(w * abs(position[a] - position[b]) for a, b, w in edges) / total if total else 0.0
+
+
 def find_chains(graph: nx.Graph) -> list[Chain]:
     """The connected components, largest first (coins, then dies), each in seriation order."""
     chains = []
