@@ -9,7 +9,7 @@ coins. The network is bipartite (networkx ``Graph``, nodes ``O:<die>`` and ``R:<
 
 **Seriation** (the order suggested inside a chain) is spectral: the dies are sorted by their value in the
 Fiedler vector (the eigenvector of the second-smallest eigenvalue) of the weighted Laplacian of the
-chain's graph (networkx ``spectral_ordering``). The Fiedler vector is the one-dimensional placement that
+chain's graph (networkx ``fiedler_vector``). The Fiedler vector is the one-dimensional placement that
 minimises ``sum w_ij (x_i - x_j)**2`` for unit-norm, zero-mean ``x``: dies that share many coins get close
 positions, so a chain that was used in sequence (obverse A with reverses 1, 2; obverse B with 2, 3; ...)
 comes out in that sequence (Atkins, Boman and Hendrickson, "A spectral algorithm for seriation and the
@@ -27,6 +27,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import networkx as nx
+import numpy as np
 
 from coindie.ids import Face, parse_face_id
 from coindie.numismatics.sources import SideDies
@@ -131,11 +132,20 @@ def build_die_links(obverse: SideDies | Mapping[str, str], reverse: SideDies | M
 
 
 def seriate(graph: nx.Graph) -> list[str]:
-    """The nodes of one connected graph in spectral (Fiedler-vector) order, oriented as the module says."""
+    """The nodes of one connected graph in spectral (Fiedler-vector) order, oriented as the module says.
+
+    The graph is first copied with its nodes and links in sorted order, and dies with equal Fiedler values
+    are ordered by name, so that the order does not depend on Python's string hashing (networkx's own
+    ``spectral_ordering`` iterates a set of nodes, and ties then come out in a different order per run).
+    """
     nodes = sorted(graph.nodes)
     if len(nodes) <= 2:
         return sorted(nodes, key=lambda n: (graph.nodes[n]["side"] != OBVERSE, n))
-    order = list(nx.spectral_ordering(graph, weight="weight", method="tracemin_lu", seed=0))
+    copy = nx.Graph()
+    copy.add_nodes_from(nodes)
+    copy.add_weighted_edges_from(sorted((*sorted((a, b)), w) for a, b, w in graph.edges(data="weight")))
+    fiedler = nx.fiedler_vector(copy, weight="weight", method="tracemin_lu", seed=0)
+    order = [node for _, node in sorted(zip(np.round(fiedler, 9).tolist(), nodes, strict=True))]
     obverses = [n for n in order if graph.nodes[n]["side"] == OBVERSE]
     if obverses:
         largest = max(obverses, key=lambda n: (graph.nodes[n]["coins"], n))
