@@ -65,15 +65,23 @@ def _edge_transform(graph: nx.Graph, into: str, moved: str) -> NDArray[np.float6
 def align_die(side: str, die: str, faces: list[str], pairs_graph: nx.Graph) -> DieAlignment:
     """The alignment of one die's faces (module docstring)."""
     faces = sorted(faces)
-    sub = pairs_graph.subgraph(faces)
+    # A sorted copy: networkx subgraph views iterate a set, and the spanning tree's ties (many links at
+    # probability 1) would then be broken differently from run to run.
+    sub = nx.Graph()
+    sub.add_nodes_from(f for f in faces if f in pairs_graph)
+    view = pairs_graph.subgraph(faces)
+    edges = sorted((*sorted((a, b)), w) for a, b, w in view.edges(data="weight"))
+    sub.add_weighted_edges_from(edges)
     strength = {f: sum(w for _, _, w in sub.edges(f, data="weight")) if f in sub else 0.0 for f in faces}
     reference = max(faces, key=lambda f: (strength[f], -faces.index(f)))
     alignment = DieAlignment(side, die, faces, reference, {reference: np.eye(4)})
     if reference not in sub or sub.number_of_edges() == 0:
         return alignment
-    tree = nx.maximum_spanning_tree(
-        sub.subgraph(nx.node_connected_component(sub, reference)), weight="weight"
-    )
+    component = nx.node_connected_component(sub, reference)
+    linked = nx.Graph()
+    linked.add_nodes_from(f for f in faces if f in component)
+    linked.add_weighted_edges_from(e for e in edges if e[0] in component)
+    tree = nx.maximum_spanning_tree(linked, weight="weight")
     alignment.tree = sorted((a, b, float(w)) for a, b, w in tree.edges(data="weight"))
     for face, path in nx.single_source_shortest_path(tree, reference).items():
         T = np.eye(4)
