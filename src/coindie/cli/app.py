@@ -88,6 +88,7 @@ def main() -> None:
 from coindie.cli import bench as _bench  # noqa: E402,F401
 from coindie.cli import cluster as _cluster  # noqa: E402,F401
 from coindie.cli import demo as _demo  # noqa: E402,F401
+from coindie.cli import numismatics as _numismatics  # noqa: E402,F401
 from coindie.cli import project as _project  # noqa: E402,F401
 from coindie.cli import registration as _registration  # noqa: E402,F401
 from coindie.cli import scans as _scans  # noqa: E402,F401
