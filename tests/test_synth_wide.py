@@ -336,3 +336,12 @@ def test_study_preset_has_twelve_unbalanced_dies_all_in_the_clustering_test():
     assert len(registration) == 6 and {d[0] for d in registration} == {"D", "R"}
     assert max(sizes.values()) >= 10 and min(sizes.values()) <= 2
     assert len({f.coin for f in plan.faces}) == 40  # every coin has both faces
+
+
+def test_synthesize_takes_a_physics_by_name_and_resolves_it_with_the_hoard_seed():
+    from coindie.synth.hoard import resolve_physics
+
+    assert resolve_physics("wide", 4) == (wide_physics(4), "wide")
+    assert resolve_physics(physics_by_name("noise:high"), 4) == (axis_physics("noise", HIGH), "noise:high")
+    assert resolve_physics(None, 4) == (PhysicsParams(), "default")
+    assert resolve_physics(hard_physics(), 4) == (hard_physics(), "custom")
