@@ -101,3 +101,28 @@ def clustering(
         benchmark_clustering(data, out, options, progress=progress)
     Console().print(Markdown((out / "summary.md").read_text().split("\n\nThe paper's")[0]))
     typer.echo(f"results in {out}")
+
+
+@bench.command("generalization")
+@exits_cleanly
+def generalization(
+    out: Annotated[Path, typer.Option("--out", help="Folder for the hoards, projects and results.*")],
+    rows: Annotated[
+        str,
+        typer.Option(help="Comma-separated rows (AXIS:low, AXIS:high, hard, riedones); default: every row."),
+    ] = "",
+    seed: Annotated[int, typer.Option(help="Seed of the first row's hoard (the next rows count up).")] = 1000,
+    workers: Annotated[int, typer.Option(help="Worker processes.")] = 2,
+    riedones_scale: Annotated[float, typer.Option(help="Scale of the riedones preset's row.")] = 0.05,
+) -> None:
+    """Die clustering, scans only and shipped defaults, on hoards of other scanners, flans and wear:
+    FMI, ARI, same-die pairs refused, pair AUC and time per pair, for the relief and paper scorers."""
+    from coindie.bench.generalization import run_generalization
+
+    if workers < 1:
+        raise ParameterError(f"--workers must be at least 1. Got {workers}.")
+    chosen = [r.strip() for r in rows.split(",") if r.strip()] or None
+    run_generalization(
+        out, chosen, seed=seed, workers=workers, riedones_scale=riedones_scale, echo=typer.echo
+    )
+    typer.echo((out / "results.md").read_text())

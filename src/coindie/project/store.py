@@ -23,7 +23,7 @@ import numpy as np
 from coindie.errors import CoinDieError
 from coindie.ids import FaceId, parse_face_id
 from coindie.project.schema import PRAGMAS, SCHEMA, SCHEMA_VERSION
-from coindie.similarity.calibration import MIXTURE_THRESHOLD, HoardCalibration, calibrate_hoard, log_odds
+from coindie.similarity.calibration import MIXTURE_THRESHOLD, HoardCalibration, calibrated_probabilities
 
 if TYPE_CHECKING:
     from coindie.clustering import ProbabilityGraph
@@ -323,11 +323,11 @@ class Project:
         ]
         weights = np.array([float(p["probability"] or 0.0) for p in pairs])
         if calibrated:
+            valid = np.array([bool(p["valid"]) for p in pairs], dtype=bool)
             for one_side in {p["side"] for p in pairs}:
-                on_side = np.array([p["side"] == one_side for p in pairs])
-                valid = on_side & np.array([bool(p["valid"]) for p in pairs])
-                calibration = self.calibration(one_side, params_hash)
-                weights[valid] = calibration.probability(log_odds(weights[valid]))
+                on = np.array([p["side"] == one_side for p in pairs])
+                prior, what = self._calibration_start(one_side, params_hash)
+                weights[on], _ = calibrated_probabilities(weights[on], valid[on], prior=prior, what=what)
         edges = [(p["source"], p["target"], float(w)) for p, w in zip(pairs, weights, strict=True)]
         return ProbabilityGraph.from_edges(edges, faces, where=str(self.folder))
 
@@ -351,13 +351,18 @@ class Project:
         EM started from the run's scorer's training populations."""
         params_hash = params_hash or self.current_params()
         pairs = self.scored_pairs(params_hash, side)
-        valid = [float(p["probability"] or 0.0) for p in pairs if p["valid"]]
-        prior_text = self.meta(f"populations:{params_hash}")
-        prior = {k: tuple(v) for k, v in json.loads(prior_text).items()} if prior_text else None
+        probabilities = [float(p["probability"] or 0.0) for p in pairs]
+        prior, what = self._calibration_start(side, params_hash)
+        valid = [bool(p["valid"]) for p in pairs]
+        return calibrated_probabilities(probabilities, valid, prior=prior, what=what)[1]
+
+    def _calibration_start(
+        self, side: str, params_hash: str | None
+    ) -> tuple[dict[str, tuple[float, float]] | None, str]:
+        prior_text = self.meta(f"populations:{params_hash or self.current_params()}")
+        prior = json.loads(prior_text) if prior_text else {}
         name = {"D": "obverse", "R": "reverse"}.get(side, side)
-        return calibrate_hoard(
-            valid, refused=len(pairs) - len(valid), prior=prior or None, what=f"{name} pairs"
-        )
+        return {k: (float(v[0]), float(v[1])) for k, v in prior.items()} or None, f"{name} pairs"
 
 
 def decode_pair(row: sqlite3.Row) -> dict[str, Any]:

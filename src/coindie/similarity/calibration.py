@@ -129,6 +129,23 @@ def calibrate_hoard(
     )  # fmt: skip
 
 
+def calibrated_probabilities(
+    probabilities: ArrayLike,
+    valid: ArrayLike,
+    *,
+    prior: Mapping[str, tuple[float, float]] | None = None,
+    what: str = "same-side pairs",
+) -> tuple[FloatArray, HoardCalibration]:
+    """The hoard-calibrated probability of each pair of one side (0 where the registration was refused,
+    ``valid`` False), and the calibration."""
+    p = np.asarray(probabilities, dtype=np.float64)
+    ok = np.asarray(valid, dtype=bool)
+    calibration = calibrate_hoard(p[ok], refused=int((~ok).sum()), prior=prior, what=what)
+    out = np.zeros_like(p)
+    out[ok] = calibration.probability(log_odds(p[ok]))
+    return out, calibration
+
+
 def _fit(z: FloatArray, prior: Mapping[str, tuple[float, float]] | None) -> tuple[FloatArray, ...]:
     """Means, sds and weights of the (different, same) components, EM from the prior or from the data's
     bulk and upper tail."""

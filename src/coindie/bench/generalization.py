@@ -1,0 +1,242 @@
+"""``coindie bench generalization``: the die study on hoards of other scanners, flans and wear.
+
+One row per hoard: a ``study`` hoard (80 faces, 12 dies) made with one axis of the wide world
+(:mod:`coindie.synth.physics`) at one of its extremes, the all-hard mix, and the ``riedones`` preset
+(the paper's protocol, scaled). Each hoard goes through what a user runs, scans only, shipped defaults:
+a project (``coindie init``, ``coindie run``: every same-side pair registered once by ``relief``, both the
+relief features and the paper's histogram stored), then for each scorer its probabilities, the per-hoard
+calibration, τ from the mixture (or the silhouette when the scores do not separate), connected components,
+and the hidden labels to judge:
+
+- FMI and ARI of the clusters;
+- the share of same-die pairs refused (registration refused, or nothing to score);
+- the pair AUC (same-die against different-die pairs, refused pairs at probability 0);
+- the time per pair (registration plus the scorer's own measure).
+
+Scorers: ``relief`` (the default) and ``paper`` (the distance histogram and the shipped paper model).
+Hoards and projects are kept under OUT and resumed, so a rerun only does what is missing.
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+from collections.abc import Callable, Sequence
+from dataclasses import asdict, dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from coindie.errors import ParameterError
+
+#: The paper's protocol row: the riedones preset at this scale with the default physics.
+RIEDONES_ROW = "riedones"
+SCORER_NAMES = ("relief", "paper")
+COLUMNS = ("fmi", "ari", "same_refused", "auc", "seconds_per_pair", "clusters", "dies", "threshold")
+
+
+@dataclass(frozen=True)
+class RowResult:
+    row: str
+    scorer: str
+    fmi: float
+    ari: float
+    same_refused: float
+    auc: float
+    seconds_per_pair: float
+    clusters: int
+    dies: int
+    threshold: float
+    threshold_from: str
+    separates: bool
+
+
+def benchmark_rows() -> list[str]:
+    """Every row of the matrix: each axis at its two extremes, the all-hard mix, the riedones preset."""
+    from coindie.synth.physics import BENCHMARK_ROWS
+
+    return [*BENCHMARK_ROWS, RIEDONES_ROW]
+
+
+def run_generalization(
+    out: str | Path,
+    rows: Sequence[str] | None = None,
+    *,
+    seed: int = 1000,
+    workers: int = 2,
+    riedones_scale: float = 0.05,
+    models: dict[str, Any] | None = None,
+    echo: Callable[[str], None] = print,
+) -> list[RowResult]:
+    """Run (or resume) every row; write ``results.csv``, ``results.json``, ``results.md`` and
+    ``generalization.png`` in ``out``; return the results."""
+    out = Path(out)
+    rows = list(rows) if rows else benchmark_rows()
+    known = set(benchmark_rows())
+    unknown = [r for r in rows if r not in known]
+    if unknown:
+        raise ParameterError(f"unknown benchmark row(s) {unknown}; known: {', '.join(sorted(known))}")
+    models = models or _shipped_models()
+    results: list[RowResult] = []
+    for k, row in enumerate(rows):
+        hoard = _hoard(out / "hoards" / row.replace(":", "-"), row, seed + k, workers, riedones_scale)
+        project = _project(out / "projects" / row.replace(":", "-"), hoard, workers)
+        for scorer in SCORER_NAMES:
+            result = _evaluate(row, scorer, models[scorer], project, hoard)
+            results.append(result)
+            echo(
+                f"{row:>16} {scorer:>6}: FMI {result.fmi:.3f} ARI {result.ari:.3f} AUC {result.auc:.3f} "
+                f"same refused {result.same_refused:.1%} {result.clusters} clusters for {result.dies} dies "
+                f"(tau {result.threshold:g} {result.threshold_from})"
+            )
+        write_results(out, results)
+    return results
+
+
+def _shipped_models() -> dict[str, Any]:
+    from coindie.similarity.scorers import default_scorer
+
+    return {name: default_scorer(name) for name in SCORER_NAMES}
+
+
+def _hoard(folder: Path, row: str, seed: int, workers: int, riedones_scale: float) -> Path:
+    from coindie.synth.hoard import synthesize
+    from coindie.synth.physics import physics_by_name
+
+    if row == RIEDONES_ROW:
+        synthesize(folder, preset="riedones", scale=riedones_scale, seed=seed, workers=workers)
+    else:
+        synthesize(folder, preset="study", physics=physics_by_name(row), seed=seed, workers=workers)
+    return folder
+
+
+def _project(folder: Path, hoard: Path, workers: int) -> Any:
+    from coindie.project import init_project, open_project
+    from coindie.project.run import RunConfig, run_project
+
+    project = open_project(folder) if (folder / "project.sqlite").exists() else init_project(folder, hoard)[0]
+    run_project(project, RunConfig(mode="exhaustive", workers=workers), echo=lambda line: None)
+    return project
+
+
+def _evaluate(row: str, scorer_name: str, scorer: Any, project: Any, hoard: Path) -> RowResult:
+    from sklearn.metrics import roc_auc_score
+
+    from coindie.clustering import (
+        ProbabilityGraph,
+        cluster,
+        evaluate,
+        read_clusters,
+        select_threshold_unsupervised,
+    )
+    from coindie.similarity.calibration import MIXTURE_THRESHOLD, calibrated_probabilities
+
+    truth = read_clusters(hoard / "labels.csv")
+    pairs = project.scored_pairs()
+    faces = [s.face_id for s in project.scans("ok")]
+    raw = np.array([_probability(p, scorer) for p in pairs])
+    valid = np.array([bool(p["valid"]) and _input(p, scorer).any() for p in pairs], dtype=bool)
+    same = np.array([truth[p["source"]] == truth[p["target"]] for p in pairs], dtype=bool)
+    calibrated, all_separate = np.zeros(len(pairs)), True
+    populations = getattr(scorer, "populations", None) or None
+    for side in sorted({p["side"] for p in pairs}):
+        on = np.array([p["side"] == side for p in pairs], dtype=bool)
+        calibrated[on], calibration = calibrated_probabilities(raw[on], valid[on], prior=populations)
+        all_separate &= calibration.separates
+    graph = ProbabilityGraph.from_edges(
+        [(p["source"], p["target"], float(w)) for p, w in zip(pairs, calibrated, strict=True)], faces
+    )
+    if all_separate:
+        tau, how = MIXTURE_THRESHOLD, "mixture"
+    else:
+        tau, how = select_threshold_unsupervised(graph).threshold, "silhouette"
+    clusters = cluster(graph, "components", tau)
+    scores = evaluate(clusters.labels, truth).scores()
+    seconds = [_seconds(p, scorer) for p in pairs if p.get("timings")]
+    auc = float(roc_auc_score(same, calibrated)) if 0 < same.sum() < len(same) else float("nan")
+    return RowResult(
+        row, scorer_name, float(scores["fmi"]), float(scores["ari"]),
+        float((~valid & same).sum() / max(1, same.sum())), auc, float(np.median(seconds)) if seconds else 0.0,
+        int(scores["n_clusters"]), int(scores["n_dies"]), float(tau), how, bool(all_separate),
+    )  # fmt: skip
+
+
+def _input(pair: dict[str, Any], scorer: Any) -> np.ndarray:
+    data = pair.get("histogram") if scorer.INPUT == "histogram" else pair.get("features")
+    return np.zeros(1) if data is None else np.asarray(data)
+
+
+def _probability(pair: dict[str, Any], scorer: Any) -> float:
+    data = _input(pair, scorer)
+    if not pair["valid"] or not data.any():
+        return 0.0
+    return float(scorer.predict_proba(data[None, :])[0])
+
+
+def _seconds(pair: dict[str, Any], scorer: Any) -> float:
+    t = pair["timings"]
+    return float(t.get("register", 0.0)) + float(
+        t.get("histogram" if scorer.INPUT == "histogram" else "features", 0.0)
+    )
+
+
+# ------------------------------------------------------------------------------------------------ reports
+
+
+def write_results(out: Path, results: list[RowResult]) -> None:
+    out.mkdir(parents=True, exist_ok=True)
+    fields = list(asdict(results[0]))
+    with (out / "results.csv").open("w", newline="") as handle:
+        writer = csv.DictWriter(handle, fieldnames=fields)
+        writer.writeheader()
+        writer.writerows(asdict(r) for r in results)
+    (out / "results.json").write_text(json.dumps([asdict(r) for r in results], indent=1) + "\n")
+    (out / "results.md").write_text(results_table(results))
+    plot_results(results, out / "generalization.png")
+
+
+def results_table(results: list[RowResult]) -> str:
+    """A markdown table: one line per row, the two scorers side by side."""
+    by_row: dict[str, dict[str, RowResult]] = {}
+    for r in results:
+        by_row.setdefault(r.row, {})[r.scorer] = r
+    head = "| row | " + " | ".join(
+        f"{c} {s}" for c in ("FMI", "ARI", "same refused", "AUC", "s/pair") for s in SCORER_NAMES
+    )
+    lines = [head + " | clusters / dies (relief) |", "|---" * (2 + 5 * len(SCORER_NAMES)) + "|"]
+    for row, scorers in by_row.items():
+        cells = []
+        for key, fmt in (
+            ("fmi", "{:.3f}"), ("ari", "{:.3f}"), ("same_refused", "{:.1%}"), ("auc", "{:.3f}"),
+            ("seconds_per_pair", "{:.3f}"),
+        ):  # fmt: skip
+            cells += [fmt.format(getattr(scorers[s], key)) if s in scorers else "" for s in SCORER_NAMES]
+        relief = scorers.get("relief")
+        count = f"{relief.clusters} / {relief.dies}" if relief else ""
+        lines.append(f"| {row} | " + " | ".join(cells) + f" | {count} |")
+    return "\n".join(lines) + "\n"
+
+
+def plot_results(results: list[RowResult], path: Path) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    rows = list(dict.fromkeys(r.row for r in results))
+    fig, ax = plt.subplots(figsize=(max(6.0, 0.45 * len(rows) + 2), 4.0))
+    width = 0.4
+    for k, scorer in enumerate(SCORER_NAMES):
+        values = {r.row: r.fmi for r in results if r.scorer == scorer}
+        xs = np.arange(len(rows)) + (k - 0.5) * width
+        ax.bar(xs, [values.get(row, np.nan) for row in rows], width, label=scorer)
+    ax.axhline(0.95, color="grey", lw=0.8, ls="--")
+    ax.set_xticks(np.arange(len(rows)), rows, rotation=60, ha="right", fontsize=8)
+    ax.set_ylim(0, 1.02)
+    ax.set_ylabel("FMI (no labels, shipped defaults)")
+    ax.set_title("Die clustering on hoards of other scanners, flans and wear")
+    ax.legend(loc="lower left")
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)

@@ -1,0 +1,74 @@
+"""The per-hoard calibration: two populations recovered from a hoard's own scores, without labels."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from coindie.similarity.calibration import (
+    MIXTURE_THRESHOLD,
+    calibrate_hoard,
+    calibrated_probabilities,
+    log_odds,
+)
+
+
+def _mixture(share: float, n: int, seed: int, same=(5.0, 2.5), different=(-7.0, 1.5)) -> tuple:
+    rng = np.random.default_rng(seed)
+    same_die = rng.random(n) < share
+    z = np.where(same_die, rng.normal(*same, n), rng.normal(*different, n))
+    return 1.0 / (1.0 + np.exp(-z)), same_die
+
+
+@pytest.mark.parametrize("share", [0.03, 0.12, 0.3])
+def test_the_same_die_share_of_a_score_mixture_is_recovered(share: float) -> None:
+    probabilities, same_die = _mixture(share, 3000, seed=int(share * 100))
+    calibration = calibrate_hoard(probabilities)
+    assert calibration.separates, calibration.message
+    assert abs(calibration.same_share - same_die.mean()) < 0.02
+    assert calibration.same[0] == pytest.approx(5.0, abs=0.5)
+    assert calibration.different[0] == pytest.approx(-7.0, abs=0.3)
+
+
+def test_a_prior_from_another_scanner_is_corrected_by_the_hoard() -> None:
+    """The scorer's training populations sit elsewhere (another scanner): EM moves to this hoard's."""
+    probabilities, same_die = _mixture(0.15, 2000, seed=4, same=(1.0, 1.0), different=(-4.0, 1.0))
+    prior = {"same": (8.0, 3.0), "different": (-8.0, 2.0)}
+    calibration = calibrate_hoard(probabilities, prior=prior)
+    assert calibration.separates
+    assert abs(calibration.same_share - same_die.mean()) < 0.03
+    calibrated = calibration.probability(log_odds(probabilities))
+    # on this hoard, the model's own 0.5 (log-odds 0) would miss most same-die pairs (mean log-odds 1)
+    # and the calibrated threshold keeps most of them while keeping few different-die pairs
+    kept = calibrated > MIXTURE_THRESHOLD
+    assert kept[same_die].mean() > 0.9 and kept[~same_die].mean() < 0.01
+
+
+def test_calibrated_probabilities_never_fall_as_the_score_rises() -> None:
+    """A same-die component wider than the other would claim the far left tail too: it must not."""
+    probabilities, _ = _mixture(0.2, 2000, seed=5, same=(4.0, 4.0), different=(-6.0, 1.0))
+    calibration = calibrate_hoard(probabilities)
+    grid = np.linspace(-30, 30, 601)
+    posterior = calibration.probability(grid)
+    assert np.all(np.diff(posterior) >= -1e-12)
+    assert posterior[0] < 0.01 and posterior[-1] > 0.999
+
+
+def test_scores_of_one_population_are_reported_as_not_separating() -> None:
+    rng = np.random.default_rng(6)
+    z = rng.normal(-2.0, 1.5, 500)
+    calibration = calibrate_hoard(1.0 / (1.0 + np.exp(-z)), refused=300, what="obverse pairs")
+    assert not calibration.separates
+    assert "do not separate" in calibration.message and "300 of 800" in calibration.message
+    # the scorer's own probabilities are kept
+    np.testing.assert_allclose(calibration.probability(z), 1.0 / (1.0 + np.exp(-z)), atol=1e-9)
+
+
+def test_refused_pairs_stay_at_zero_and_too_few_pairs_do_not_calibrate() -> None:
+    probabilities, _ = _mixture(0.2, 400, seed=7)
+    valid = np.ones(400, dtype=bool)
+    valid[:50] = False
+    calibrated, calibration = calibrated_probabilities(probabilities, valid)
+    assert calibration.refused == 50 and np.all(calibrated[:50] == 0)
+    few = calibrate_hoard(probabilities[:5])
+    assert not few.separates and "only 5" in few.message
