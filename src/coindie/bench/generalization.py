@@ -116,7 +116,11 @@ def _project(folder: Path, hoard: Path, workers: int) -> Any:
     from coindie.project.run import RunConfig, run_project
 
     project = open_project(folder) if (folder / "project.sqlite").exists() else init_project(folder, hoard)[0]
-    run_project(project, RunConfig(mode="exhaustive", workers=workers), echo=lambda line: None)
+    # Every pair stores both scorers' inputs (relief features and histogram); the run's own probabilities
+    # are the paper model's, whose parameters do not change when the relief model is retrained, so a
+    # project is scored once and each scorer applied to what it stored (as coindie run would apply it).
+    config = RunConfig(mode="exhaustive", workers=workers, scorer="paper")
+    run_project(project, config, echo=lambda line: None)
     return project
 
 

@@ -12,8 +12,9 @@ larger spread would otherwise also claim the far tail on the other side. The mix
 same-die share and the clustering threshold (τ = 0.5: a link is kept when same-die is the likelier
 population).
 
-When the log-odds do not split into two modes (Ashman's D < 2 between the components, or an upper
-component of less than one pair), the hoard's scores do not separate: the scorer's own probabilities are
+When the log-odds do not split into a same-die and a different-die mode (Ashman's D < 2 between the
+components; an upper component of less than one pair or of most pairs; or one whose typical pair the
+scorer itself judges different-die), the hoard's scores do not separate: the scorer's own probabilities are
 kept and :attr:`HoardCalibration.message` says so in words, with the numbers, for ``coindie run`` and
 ``coindie status``.
 """
@@ -33,6 +34,8 @@ FloatArray = NDArray[np.float64]
 
 #: Ashman's D between the two components below which they are not told apart.
 MIN_SEPARATION = 2.0
+#: Largest share of same-die pairs a hoard's mixture may claim: most same-side pairs are of different dies.
+MAX_SAME_SHARE = 0.5
 #: Fewest scored pairs a mixture is fitted on.
 MIN_PAIRS = 10
 #: Log-odds are clipped to +-this before fitting (a probability of exactly 0 or 1 has no finite logit).
@@ -104,19 +107,23 @@ def calibrate_hoard(
     if refused < 0:
         raise ParameterError(f"refused must be >= 0. Got {refused}.")
     if len(z) < MIN_PAIRS:
-        return _not_separated(z, refused, 0.0, f"only {len(z)} of {total} {what} could be scored")
+        return _not_separated(
+            z, refused, 0.0,
+            f"only {len(z)} of {total} {what} could be scored, too few to tell same-die from different-die",
+        )  # fmt: skip
     means, sds, weights = _fit(z, prior)
     (mean_d, mean_s), (sd_d, sd_s), share = means, sds, float(weights[1])
     separation = float(np.sqrt(2.0) * (mean_s - mean_d) / np.sqrt(sd_s**2 + sd_d**2))
     refused_note = (
         f"; {refused} of {total} ({refused / total:.0%}) refused by the registration" if refused else ""
     )
-    if separation < MIN_SEPARATION or share * len(z) < 1.0:
+    failures = _implausible(separation, share, len(z), mean_s)
+    if failures:
         reason = (
             f"the scores of {len(z)} {what} do not separate into same-die and different-die populations "
-            f"(Ashman's D {separation:.2f} < {MIN_SEPARATION:g}; upper component {share:.1%} of the pairs, "
-            f"log-odds {mean_s:.2f} ± {sd_s:.2f} against {mean_d:.2f} ± {sd_d:.2f}){refused_note}: "
-            "the scorer's own probabilities are kept; check the scans' quality and the registrations"
+            f"({'; '.join(failures)}; upper component log-odds {mean_s:.2f} ± {sd_s:.2f} against "
+            f"{mean_d:.2f} ± {sd_d:.2f}){refused_note}: the scorer's own probabilities are kept; check the "
+            "scans' quality and the registrations"
         )
         return _not_separated(z, refused, separation, reason, share, (mean_s, sd_s), (mean_d, sd_d))
     message = (
@@ -144,6 +151,24 @@ def calibrated_probabilities(
     out = np.zeros_like(p)
     out[ok] = calibration.probability(log_odds(p[ok]))
     return out, calibration
+
+
+def _implausible(separation: float, share: float, n: int, mean_same: float) -> list[str]:
+    """Why a fitted mixture is not a same-die / different-die split ([] when it is): its components
+    overlap; its upper one holds less than one pair, or most pairs (most pairs of a hoard are of
+    different dies); or its typical member is judged different-die by the scorer itself (log-odds < 0:
+    then the split is between kinds of different-die pairs, such as other designs and other dies of
+    one design)."""
+    failures = []
+    if separation < MIN_SEPARATION:
+        failures.append(f"Ashman's D {separation:.2f} < {MIN_SEPARATION:g}")
+    if share * n < 1.0:
+        failures.append(f"upper component {share:.1%} of the pairs, less than one pair")
+    if share > MAX_SAME_SHARE:
+        failures.append(f"upper component {share:.1%} of the pairs, more than {MAX_SAME_SHARE:.0%}")
+    if mean_same < 0.0:
+        failures.append("its typical pair is judged different-die by the scorer (mean log-odds < 0)")
+    return failures
 
 
 def _fit(z: FloatArray, prior: Mapping[str, tuple[float, float]] | None) -> tuple[FloatArray, ...]:
