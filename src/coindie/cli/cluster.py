@@ -43,9 +43,10 @@ def cluster_command(
     if threshold is not None and auto:
         raise ParameterError("give --threshold or --auto, not both")
     graph = _graph(source)
-    mixture = _mixture_threshold(source) if auto else None
-    if mixture is not None:
-        tau, how = mixture, "from the hoard's two score populations (calibrated probabilities)"
+    if auto and source.is_dir():
+        from coindie.project import open_project
+
+        tau, how = open_project(source).auto_threshold(method=method)
     elif auto:
         choice = select_threshold_unsupervised(graph, method)
         tau, how = choice.threshold, f"chosen by silhouette {choice.score:.3f}"
@@ -64,16 +65,6 @@ def cluster_command(
         f"{out}: {graph.n_nodes} faces in {clusters.n_clusters} clusters ({method}, threshold {tau:g}, "
         f"{how}); largest {', '.join(map(str, sizes[:8]))}"
     )
-
-
-def _mixture_threshold(source: Path) -> float | None:
-    """A project's τ from its per-hoard calibration (None for a bare graph, or scores that do not
-    separate: then the silhouette chooses)."""
-    if not source.is_dir():
-        return None
-    from coindie.project import open_project
-
-    return open_project(source).mixture_threshold()
 
 
 def _graph(source: Path):  # noqa: ANN202

@@ -82,7 +82,7 @@ def demo(
 def cluster_and_evaluate(project, out: Path, method: str) -> list[str]:  # noqa: ANN001 (Project)
     """Per side: the unsupervised threshold, the clusters (written to ``out/clusters_<side>.csv``) and,
     when the project has labels, FMI / ARI and clusters vs dies; one line per side."""
-    from coindie.clustering import cluster, evaluate, select_threshold_unsupervised, write_clusters
+    from coindie.clustering import cluster, evaluate, write_clusters
 
     labels = project.labels()
     lines = []
@@ -90,12 +90,10 @@ def cluster_and_evaluate(project, out: Path, method: str) -> list[str]:  # noqa:
         graph = project.probability_graph(side)
         if graph.n_nodes < 3:
             continue
-        choice = select_threshold_unsupervised(graph, method)
-        clusters = cluster(graph, method, choice.threshold)
+        tau, how = project.auto_threshold(side, method)
+        clusters = cluster(graph, method, tau)
         path = write_clusters(clusters, out / f"clusters_{side}.csv")
-        line = (
-            f"{name}: {graph.n_nodes} faces, {clusters.n_clusters} clusters at threshold {choice.threshold:g}"
-        )
+        line = f"{name}: {graph.n_nodes} faces, {clusters.n_clusters} clusters at threshold {tau:g} ({how})"
         truth = {face: die for face, die in labels.items() if face in clusters.labels}
         if truth:
             s = evaluate(clusters.labels, truth).scores()

@@ -58,7 +58,7 @@ def rotation_angle_deg(R: ArrayLike) -> float:
 
 
 def angle_between_deg(a: ArrayLike, b: ArrayLike) -> float:
-    """Angle between two directions, in degrees."""
+    """Angle between two directions, in degrees: ``atan2(|a x b|, a . b)``, accurate for every angle,
+    where ``arccos`` of the dot product cannot resolve angles below ~1e-6° (its slope is infinite at 1)."""
     a, b = np.asarray(a, dtype=np.float64), np.asarray(b, dtype=np.float64)
-    cos = a @ b / (np.linalg.norm(a) * np.linalg.norm(b))
-    return float(np.degrees(np.arccos(np.clip(cos, -1.0, 1.0))))
+    return float(np.degrees(np.arctan2(np.linalg.norm(np.cross(a, b)), a @ b)))

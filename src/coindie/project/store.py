@@ -331,20 +331,32 @@ class Project:
         edges = [(p["source"], p["target"], float(w)) for p, w in zip(pairs, weights, strict=True)]
         return ProbabilityGraph.from_edges(edges, faces, where=str(self.folder))
 
-    def mixture_threshold(self, params_hash: str | None = None) -> float | None:
+    def mixture_threshold(self, side: str | None = None, params_hash: str | None = None) -> float | None:
         """τ from the hoard's own score populations (:data:`coindie.similarity.calibration.
-        MIXTURE_THRESHOLD` on the calibrated probabilities) when every side's scores separate; None when
-        some side's do not (then a threshold must come from elsewhere: labels, or the silhouette)."""
+        MIXTURE_THRESHOLD` on the calibrated probabilities) when the scores of ``side`` (every side when
+        None) separate; None when some do not (then a threshold must come from elsewhere)."""
         params_hash = params_hash or self.current_params()
         sides = [
             r["side"]
             for r in self.db.execute(
                 "SELECT DISTINCT side FROM pairs WHERE params_hash = ? AND status = 'done'", (params_hash,)
             )
+            if side is None or r["side"] == side
         ]
-        if sides and all(self.calibration(side, params_hash).separates for side in sides):
+        if sides and all(self.calibration(one, params_hash).separates for one in sides):
             return MIXTURE_THRESHOLD
         return None
+
+    def auto_threshold(self, side: str | None = None, method: str = "components") -> tuple[float, str]:
+        """The threshold without labels, and how it was chosen: the hoard's own score populations, or,
+        when they do not separate, the best silhouette of the calibrated graph's clusters."""
+        from coindie.clustering import select_threshold_unsupervised
+
+        tau = self.mixture_threshold(side)
+        if tau is not None:
+            return tau, "from the hoard's two score populations"
+        choice = select_threshold_unsupervised(self.probability_graph(side), method)
+        return choice.threshold, f"chosen by silhouette {choice.score:.3f} (the scores do not separate)"
 
     def calibration(self, side: str, params_hash: str | None = None) -> HoardCalibration:
         """The two populations of ``side``'s scored pairs (:func:`coindie.similarity.calibrate_hoard`),
