@@ -9,8 +9,8 @@ hoard's registered pairs are fitted by a two-component Gaussian mixture (scikit-
 the same-die one), and a pair's calibrated probability is its posterior of the same-die component —
 made non-decreasing in the score (the smallest posterior at or above it), since a Gaussian with the
 larger spread would otherwise also claim the far tail on the other side. The mixture gives the hoard's
-same-die share and the clustering threshold (τ = 0.5: a link is kept when same-die is the likelier
-population).
+same-die share and the clustering threshold (τ = 0.9 on the calibrated probability, see
+:data:`MIXTURE_THRESHOLD`).
 
 When the log-odds do not split into a same-die and a different-die mode (Ashman's D < 2 between the
 components; an upper component of less than one pair or of most pairs; or one whose typical pair the
@@ -42,8 +42,10 @@ MIN_PAIRS = 10
 _MAX_LOG_ODDS = 30.0
 #: Smallest standard deviation of a component (log-odds units): no component collapses onto a few pairs.
 _MIN_SD = 0.25
-#: Threshold on the calibrated probability: the likelier population decides.
-MIXTURE_THRESHOLD = 0.5
+#: Threshold on the calibrated probability. Dies are connected components of the kept links, so a false
+#: link merges two whole dies while a missed one rarely splits a die (its coins are linked many times
+#: over): the Bayes decision with a false link costing nine missed ones keeps a link above 0.9.
+MIXTURE_THRESHOLD = 0.9
 
 
 @dataclass(frozen=True)
