@@ -7,6 +7,7 @@ import json
 import os
 import sqlite3
 
+import numpy as np
 import pytest
 from typer.testing import CliRunner
 
@@ -74,13 +75,15 @@ def test_probability_graph_has_one_side_or_both_without_cross_links(scans, tmp_p
     rows = [("L0001D", "L0002D", "D", 0.9), ("L0001D", "L0003D", "D", 0.1), ("L0001R", "L0002R", "R", 0.7)]
     for a, b, side, p in rows:
         db.execute(
-            "INSERT INTO pairs (source, target, params_hash, side, origin, status, probability) "
-            "VALUES (?, ?, 'h', ?, 'exhaustive', 'done', ?)",
+            "INSERT INTO pairs (source, target, params_hash, side, origin, status, valid, probability) "
+            "VALUES (?, ?, 'h', ?, 'exhaustive', 'done', 1, ?)",
             (a, b, side, p),
         )
-    obverses = project.probability_graph("D")
+    obverses = project.probability_graph("D", calibrated=False)
     assert sorted(obverses.nodes) == ["L0001D", "L0002D", "L0003D"]
     assert sorted(obverses.probability.tolist()) == [0.1, 0.9]
+    # two pairs are too few to calibrate on: the scorer's own probabilities are kept
+    np.testing.assert_allclose(sorted(project.probability_graph("D").probability.tolist()), [0.1, 0.9])
     both = project.probability_graph()
     assert both.n_nodes == 6  # coin_x is a node without links
     sides = [{both.nodes[i][-1], both.nodes[j][-1]} for i, j in zip(both.i, both.j, strict=True)]
