@@ -142,7 +142,22 @@ def create_app(source: ReviewSource, token: str, hosts: set[str] | None = None) 
             ],
             "edges": edges,
             "verified": [sorted(v) for v in corrections.verified],
+            **undo_redo(corrections),
         }
+
+    def undo_redo(corrections: Corrections) -> dict[str, int | None]:
+        """The edit an Undo switches off (the latest in effect) and the one a Redo switches on again
+        (the latest undone, while nothing newer was done)."""
+        log = source.log.edits()
+        undo = max(corrections.active, default=None)
+        redo = None
+        for edit in reversed(log):
+            if edit.action == "undo" and int(edit.payload.get("target", 0)) in corrections.undone:
+                redo = int(edit.payload["target"])
+                break
+            if edit.action not in ("undo", "redo"):
+                break
+        return {"undo_target": undo, "redo_target": redo}
 
     @app.get("/")
     def index() -> Response:
