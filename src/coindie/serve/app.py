@@ -15,8 +15,10 @@ from typing import Any
 
 import numpy as np
 from fastapi import FastAPI, Request
+from fastapi.exceptions import RequestValidationError
 from fastapi.responses import FileResponse, JSONResponse, Response
 from pydantic import BaseModel, Field
+from starlette.exceptions import HTTPException as StarletteHTTPException
 
 from coindie.clustering.corrections import Corrections, EditError, corrected_clusters, corrected_graph, pair
 from coindie.errors import CoinDieError, ParameterError
@@ -97,6 +99,16 @@ def create_app(source: ReviewSource, token: str, hosts: set[str] | None = None) 
     @app.exception_handler(KeyError)
     async def not_found(_: Request, error: KeyError) -> JSONResponse:
         return _error(404, str(error.args[0]) if error.args else "not found")
+
+    @app.exception_handler(StarletteHTTPException)
+    async def http_error(_: Request, error: StarletteHTTPException) -> JSONResponse:
+        message = "no such page or file" if error.status_code == 404 else str(error.detail)
+        return _error(error.status_code, message)
+
+    @app.exception_handler(RequestValidationError)
+    async def invalid(_: Request, error: RequestValidationError) -> JSONResponse:
+        problems = "; ".join(f"{'.'.join(map(str, e['loc']))}: {e['msg']}" for e in error.errors())
+        return _error(400, f"bad request: {problems}")
 
     @app.exception_handler(EditConflict)
     async def conflict(_: Request, error: EditConflict) -> JSONResponse:

@@ -55,6 +55,7 @@ class ReviewSource:
     scan_paths: dict[str, Path] = field(default_factory=dict)
     pairs: dict[tuple[str, str], PairRecord] = field(default_factory=dict)
     sides: dict[str, str] = field(default_factory=dict)
+    labels: dict[str, str] = field(default_factory=dict)  # given at init; for evaluation, never shown
 
     @property
     def has_images(self) -> bool:
@@ -203,7 +204,8 @@ def _from_project(folder: Path, threshold: float | None) -> ReviewSource:
     tau = PAPER_THRESHOLD if threshold is None else threshold
     paths = {face: Path(s.path) for face, s in scans.items()}
     sides = {face: s.side for face, s in scans.items()}
+    labels = project.labels()
     project.close()
     return ReviewSource(
-        folder.name, folder.resolve(), graph, EditLog.of_project(folder), tau, paths, pairs, sides
+        folder.name, folder.resolve(), graph, EditLog.of_project(folder), tau, paths, pairs, sides, labels
     )
