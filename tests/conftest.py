@@ -34,6 +34,8 @@ def review_project(tmp_path_factory) -> Path:
 
     from serve_support import build_project
 
+    if os.environ.get("COINDIE_TEST_REVIEW_ROOT"):  # a folder to build it in once and keep (development)
+        return build_project(Path(os.environ["COINDIE_TEST_REVIEW_ROOT"]))
     base = tmp_path_factory.getbasetemp()  # xdist: the workers' common parent is this session's
     return build_project((base.parent if os.environ.get("PYTEST_XDIST_WORKER") else base) / "serve-project")
 

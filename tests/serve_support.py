@@ -50,17 +50,32 @@ def copy_project(project: Path, to: Path) -> Path:
 def served(path: Path, *args: str) -> Iterator[str]:
     """``coindie serve PATH --port 0 --no-browser ARGS`` in a subprocess; yields the URL it prints."""
     env = {**os.environ, "PYTHONPATH": f"{SRC}{os.pathsep}{os.environ.get('PYTHONPATH', '')}"}
-    command = [sys.executable, "-c", "from coindie.cli import main; main()", "serve", str(path), "--port", "0",
-               "--no-browser", *args]  # fmt: skip
+    command = [
+        sys.executable,
+        "-c",
+        "from coindie.cli import main; main()",
+        "serve",
+        str(path),
+        "--port",
+        "0",
+        "--no-browser",
+        *args,
+    ]
     process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
     try:
         url = process.stdout.readline().strip() if process.stdout else ""
         if not url.startswith("http://"):
-            raise RuntimeError(f"coindie serve did not start: {url} {process.stderr.read() if process.stderr else ''}")
+            raise RuntimeError(
+                f"coindie serve did not start: {url} {process.stderr.read() if process.stderr else ''}"
+            )
         yield url
     finally:
         process.terminate()
-        process.wait(timeout=20)
+        try:
+            process.wait(timeout=10)
+        except subprocess.TimeoutExpired:  # still rendering an image: no need to wait for it
+            process.kill()
+            process.wait(timeout=10)
 
 
 def corresponding_pixels(source, target: str, moved: str, n: int = 4) -> tuple[list, list]:  # noqa: ANN001
@@ -81,6 +96,8 @@ def corresponding_pixels(source, target: str, moved: str, n: int = 4) -> tuple[l
         target_pixels.append((float(c0 + fc * (c1 - c0)), float(r0 + fr * (r1 - r0))))
     points_t = images.picked_points(source.scan_paths[target], target_pixels)
     points_s = apply(frame_s.T_canonical_scan @ np.linalg.inv(record.T_target_source), points_t)
-    source_pixels = [(float((x - grid_s.x0) / grid_s.resolution), float((grid_s.y0 - y) / grid_s.resolution))
-                     for x, y, _ in points_s]  # fmt: skip
+    source_pixels = [
+        (float((x - grid_s.x0) / grid_s.resolution), float((grid_s.y0 - y) / grid_s.resolution))
+        for x, y, _ in points_s
+    ]
     return target_pixels, source_pixels

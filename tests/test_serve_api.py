@@ -67,7 +67,9 @@ def test_serve_token_in_url_sets_a_cookie_for_images(served):
 # ---------------------------------------------------------------------------------------- bad input
 
 
-@pytest.mark.parametrize("route", ["/api/clusters", "/api/queue", "/api/export/clusters.csv", "/api/faces/{a}"])
+@pytest.mark.parametrize(
+    "route", ["/api/clusters", "/api/queue", "/api/export/clusters.csv", "/api/faces/{a}"]
+)
 @pytest.mark.parametrize("value", ["2", "-0.1", "nan", "abc", "inf"])
 def test_serve_bad_threshold_is_refused(served, route, value):
     source, client = served
@@ -79,13 +81,19 @@ def test_serve_bad_threshold_is_refused(served, route, value):
 def test_serve_bad_ids_are_404_with_the_id(served):
     source, client = served
     a = source.graph.nodes[0]
-    for route in ["/api/faces/L9999D", "/api/faces/L9999D/thumbnail.png", f"/api/pairs/{a}/NOPE",
-                  f"/api/pairs/NOPE/{a}/heat.png", "/api/faces/L9999D/relief.json"]:  # fmt: skip
+    for route in [
+        "/api/faces/L9999D",
+        "/api/faces/L9999D/thumbnail.png",
+        f"/api/pairs/{a}/NOPE",
+        f"/api/pairs/NOPE/{a}/heat.png",
+        "/api/faces/L9999D/relief.json",
+    ]:
         response = client.get(route, headers=HEADERS)
         assert response.status_code == 404, route
         assert "no face" in response.json()["error"], route
-    unscored = next((a, b) for a in source.graph.nodes for b in source.graph.nodes
-                    if a < b and a[-1] != b[-1])  # an obverse and a reverse: never scored  # fmt: skip
+    unscored = next(
+        (a, b) for a in source.graph.nodes for b in source.graph.nodes if a < b and a[-1] != b[-1]
+    )  # an obverse and a reverse: never scored
     response = client.get(f"/api/pairs/{unscored[0]}/{unscored[1]}", headers=HEADERS)
     assert response.status_code == 404 and "not scored" in response.json()["error"]
     a, b = _pair(source)
@@ -94,18 +102,31 @@ def test_serve_bad_ids_are_404_with_the_id(served):
     assert client.get("/api/edits?since=x", headers=HEADERS).status_code == 400
 
 
-TRAVERSALS = ["..%2F..%2Fapp.py", "%2e%2e/%2e%2e/app.py", "..%2F..%2F..%2F..%2Fetc%2Fpasswd", "%2Fetc%2Fpasswd",
-              "....//....//app.py", "..%5C..%5Capp.py"]  # fmt: skip
+TRAVERSALS = [
+    "..%2F..%2Fapp.py",
+    "%2e%2e/%2e%2e/app.py",
+    "..%2F..%2F..%2F..%2Fetc%2Fpasswd",
+    "%2Fetc%2Fpasswd",
+    "....//....//app.py",
+    "..%5C..%5Capp.py",
+]
 
 
 @pytest.mark.parametrize("attack", TRAVERSALS)
 def test_serve_path_traversal_is_refused_on_every_file_route(served, attack):
     source, client = served
     a, b = _pair(source)
-    routes = [f"/static/{attack}", f"/api/faces/{attack}/thumbnail.png", f"/api/faces/{attack}/relief.png",
-              f"/api/faces/{attack}/relief.json", f"/api/pairs/{a}/{attack}/heat.png",
-              f"/api/pairs/{attack}/{b}/target.png", f"/api/pairs/{a}/{b}/{attack}.png",
-              f"/api/pairs/{a}/{attack}/clouds.json", f"/api/export/{attack}"]  # fmt: skip
+    routes = [
+        f"/static/{attack}",
+        f"/api/faces/{attack}/thumbnail.png",
+        f"/api/faces/{attack}/relief.png",
+        f"/api/faces/{attack}/relief.json",
+        f"/api/pairs/{a}/{attack}/heat.png",
+        f"/api/pairs/{attack}/{b}/target.png",
+        f"/api/pairs/{a}/{b}/{attack}.png",
+        f"/api/pairs/{a}/{attack}/clouds.json",
+        f"/api/export/{attack}",
+    ]
     for route in routes:
         response = client.get(route, headers=HEADERS)
         assert response.status_code in (404, 400), (route, response.status_code)
@@ -151,11 +172,13 @@ def test_serve_images_are_pngs_with_content(served):
 def test_serve_edit_conflict_is_409_and_nothing_lost(served):
     source, client = served
     a, b = _pair(source)
-    first = client.post("/api/edits", json={"action": "cut", "a": a, "b": b, "base_seq": 0, "client": "one"},
-                        headers=HEADERS)  # fmt: skip
+    first = client.post(
+        "/api/edits", json={"action": "cut", "a": a, "b": b, "base_seq": 0, "client": "one"}, headers=HEADERS
+    )
     assert first.status_code == 200 and first.json()["seq"] == 1
-    second = client.post("/api/edits", json={"action": "link", "a": a, "b": b, "base_seq": 0, "client": "two"},
-                         headers=HEADERS)  # fmt: skip
+    second = client.post(
+        "/api/edits", json={"action": "link", "a": a, "b": b, "base_seq": 0, "client": "two"}, headers=HEADERS
+    )
     assert second.status_code == 409 and "refused" in second.json()["error"]
     edits = client.get("/api/edits?since=0", headers=HEADERS).json()
     assert [e["action"] for e in edits["edits"]] == ["cut"] and edits["seq"] == 1
@@ -170,7 +193,11 @@ def test_serve_exports_parse_and_agree(served, tmp_path):
     a, b = _pair(source)
     client.post("/api/edits", json={"action": "cut", "a": a, "b": b, "base_seq": 0}, headers=HEADERS)
     n = source.graph.n_nodes
-    ours = list(csv.DictReader(io.StringIO(client.get("/api/export/clusters.csv?threshold=0.5", headers=HEADERS).text)))
+    ours = list(
+        csv.DictReader(
+            io.StringIO(client.get("/api/export/clusters.csv?threshold=0.5", headers=HEADERS).text)
+        )
+    )
     assert len(ours) == n and set(ours[0]) == {"face_id", "cluster", "size", "verified"}
     paper = client.get("/api/export/clusters_paper.csv?threshold=0.5", headers=HEADERS).text
     assert paper.splitlines()[0] == "name, die" and len(paper.splitlines()) == n + 1
@@ -193,8 +220,16 @@ def test_serve_manual_registration_by_points_recovers_the_transform(served):
     a, b = _pair(source)
     automatic = source.pair_record(a, b)
     target_pixels, source_pixels = corresponding_pixels(source, a, b)
-    response = client.post(f"/api/pairs/{a}/{b}/register", headers=HEADERS, json={
-        "target_pixels": target_pixels, "source_pixels": source_pixels, "reason": "test", "base_seq": 0})  # fmt: skip
+    response = client.post(
+        f"/api/pairs/{a}/{b}/register",
+        headers=HEADERS,
+        json={
+            "target_pixels": target_pixels,
+            "source_pixels": source_pixels,
+            "reason": "test",
+            "base_seq": 0,
+        },
+    )
     assert response.status_code == 200, response.text
     info = client.get(f"/api/pairs/{a}/{b}", headers=HEADERS).json()
     assert info["origin"] == "expert" and info["reason"] == "test"
@@ -207,8 +242,11 @@ def test_serve_manual_registration_by_points_recovers_the_transform(served):
     assert info["probability"] > 0.5  # the same die, re-scored
     edits = client.get("/api/edits", headers=HEADERS).json()["edits"]
     assert edits[-1]["action"] == "register" and edits[-1]["payload"]["origin"] == "expert"
-    too_few = client.post(f"/api/pairs/{a}/{b}/register", headers=HEADERS, json={
-        "target_pixels": target_pixels[:2], "source_pixels": source_pixels[:2], "base_seq": 1})  # fmt: skip
+    too_few = client.post(
+        f"/api/pairs/{a}/{b}/register",
+        headers=HEADERS,
+        json={"target_pixels": target_pixels[:2], "source_pixels": source_pixels[:2], "base_seq": 1},
+    )
     assert too_few.status_code == 400 and ">= 3" in too_few.json()["error"]
 
 

@@ -1,4 +1,4 @@
-"""The edit log: append-only, replayed into corrections, conflicts refused, the same result on the command line."""
+"""The edit log: append-only, replayed into corrections, conflicts refused, one result on the command line."""
 
 from __future__ import annotations
 
@@ -15,8 +15,14 @@ from coindie.project.edits import EditConflict, EditLog, sidecar_path
 
 def _graph() -> ProbabilityGraph:
     # Two dies {A1..A3}, {B1, B2} joined by one wrong link A3-B1; C alone, its best partner B2.
-    edges = [("A1", "A2", 0.99), ("A2", "A3", 0.97), ("A1", "A3", 0.98), ("B1", "B2", 0.99),
-             ("A3", "B1", 0.96), ("C", "B2", 0.90)]  # fmt: skip
+    edges = [
+        ("A1", "A2", 0.99),
+        ("A2", "A3", 0.97),
+        ("A1", "A3", 0.98),
+        ("B1", "B2", 0.99),
+        ("A3", "B1", 0.96),
+        ("C", "B2", 0.90),
+    ]
     return ProbabilityGraph.from_edges(edges)
 
 
@@ -28,8 +34,11 @@ def test_edits_replay_cut_link_move_split_undo_redo(tmp_path):
     graph, log = _graph(), EditLog(tmp_path / "log.sqlite")
     assert _groups(log.clusters(graph, 0.95)) == {frozenset({"A1", "A2", "A3", "B1", "B2"}), frozenset({"C"})}
     cut = log.append(graph, "cut", "A3", "B1", base_seq=0, threshold=0.95)
-    assert _groups(log.clusters(graph, 0.95)) == {frozenset({"A1", "A2", "A3"}), frozenset({"B1", "B2"}),
-                                                  frozenset({"C"})}  # fmt: skip
+    assert _groups(log.clusters(graph, 0.95)) == {
+        frozenset({"A1", "A2", "A3"}),
+        frozenset({"B1", "B2"}),
+        frozenset({"C"}),
+    }
     # The cut holds whatever the threshold: at 0.5 C joins B's cluster, A stays apart.
     assert frozenset({"B1", "B2", "C"}) in _groups(log.clusters(graph, 0.5))
     log.append(graph, "link", "C", "B2", base_seq=1)
@@ -97,7 +106,10 @@ def test_edits_without_edits_replay_is_the_automatic_clustering(tmp_path):
     graph = _graph()
     log = EditLog(tmp_path / "log.sqlite")
     for tau in (0.0, 0.5, 0.95, 0.985):
-        assert corrected_clusters(graph, log.corrections(graph), tau).labels == cluster(graph, "components", tau).labels
+        assert (
+            corrected_clusters(graph, log.corrections(graph), tau).labels
+            == cluster(graph, "components", tau).labels
+        )
 
 
 def test_edits_cli_cluster_applies_the_sidecar_log(tmp_path):

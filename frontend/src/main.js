@@ -12,6 +12,7 @@ const PALETTE = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b
   "#bcbd22", "#393b79", "#637939", "#8c6d31", "#843c39", "#7b4173", "#3182bd", "#e6550d", "#31a354",
   "#756bb1", "#636363", "#ad494a"];
 const SINGLETON = "#b9b2a6";
+const NEIGHBOURS = 24; // rows of the coin panel (each with a server-rendered thumbnail)
 const STATES = { auto: 0, cut: 1, forced: 2, expert: 3 };
 
 const app = {
@@ -194,8 +195,8 @@ async function showFace(face) {
     info = await api(`/api/faces/${encodeURIComponent(face)}?threshold=${app.tau}`);
   } catch (error) { toast(error.message, true); return; }
   const panel = $("panel");
-  const thumb = (f) => (app.state.has_images ? `<img src="/api/faces/${encodeURIComponent(f)}/thumbnail.png" alt="">` : "");
-  const rows = info.neighbours.slice(0, 40).map((n) =>
+  const thumb = (f) => (app.state.has_images ? `<img loading="lazy" src="/api/faces/${encodeURIComponent(f)}/thumbnail.png" alt="">` : "");
+  const rows = info.neighbours.slice(0, NEIGHBOURS).map((n) =>
     `<tr class="neighbour" data-face="${n.face}"><td>${thumb(n.face)}</td><td class="state-${n.state}">${n.face}</td>` +
     `<td>${n.probability.toFixed(3)}</td><td>${n.state === "auto" ? "" : n.state}</td></tr>`).join("");
   panel.innerHTML = `<h2 id="face-id">${info.face}</h2>
@@ -243,6 +244,7 @@ async function edit(action, a, b, payload = {}) {
 }
 
 async function poll() {
+  if (app.pollPaused) { setTimeout(poll, 1500); return; } // the tests' stale tab
   try {
     const news = await api(`/api/edits?since=${app.seq}`);
     if (news.seq > app.seq) {
@@ -398,6 +400,7 @@ async function showQueue() {
 
 // ------------------------------------------------------------------------------------------ exports
 function viewPng() {
+  app.renderer.refresh(); // WebGL keeps its drawing only until the frame is shown: copy it right after a render
   const canvases = app.renderer.getCanvases();
   const first = Object.values(canvases)[0];
   const out = document.createElement("canvas");

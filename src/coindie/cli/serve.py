@@ -48,11 +48,12 @@ def serve_command(
         sock.bind((host, port))
     except OSError as error:
         raise ParameterError(f"cannot listen on {host}:{port} ({error.strerror})") from None
+    sock.listen(128)  # connections made as soon as the URL is printed wait for the server
     bound = sock.getsockname()[1]
     shown = "127.0.0.1" if host in ("0.0.0.0", "::") else host
     url = f"http://{shown}:{bound}/?token={token}"
-    print(url, flush=True)  # the first line: scripts and tests read it
     _ = review.layout  # computed before the first request
+    print(url, flush=True)  # the first line: scripts and tests read it
     print(
         f"coindie review of {review.name}: {review.graph.n_nodes} faces, {review.graph.n_edges} links, "
         f"{review.log.last_seq()} edits in the log; Ctrl-C stops",
