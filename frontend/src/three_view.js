@@ -7,7 +7,7 @@ let view = null;
 function points(flat, color) {
   const geometry = new THREE.BufferGeometry();
   geometry.setAttribute("position", new THREE.Float32BufferAttribute(flat, 3));
-  return new THREE.Points(geometry, new THREE.PointsMaterial({ color, size: 0.06 }));
+  return new THREE.Points(geometry, new THREE.PointsMaterial({ color, size: 1.5, sizeAttenuation: false }));
 }
 
 export function threeView(container, clouds) {

@@ -166,7 +166,9 @@ def aligned_pair(
     counts = ndimage.uniform_filter(counts.reshape(grid.shape), 3).ravel()
     with np.errstate(invalid="ignore", divide="ignore"):
         heat = np.where(counts > 0, sums / counts, np.nan).reshape(grid.shape)
-    return AlignedPair(grid, _placed(reliefs[0], grid), _placed(reliefs[1], grid), heat)
+    target_values = _placed(reliefs[0], grid)
+    heat[~np.isfinite(target_values)] = np.nan  # a distance to the target means something only over it
+    return AlignedPair(grid, target_values, _placed(reliefs[1], grid), heat)
 
 
 def pair_image(aligned: AlignedPair, kind: str) -> bytes:
