@@ -32,8 +32,9 @@ CHROMIUM_ARGS = [
 ]
 
 
-@pytest.fixture(scope="module")
+@pytest.fixture
 def browser():
+    """A fresh browser per test: pages left open (polling, a 3D view) would slow the next test down."""
     from playwright.sync_api import sync_playwright
 
     with sync_playwright() as playwright:

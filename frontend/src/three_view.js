@@ -22,7 +22,7 @@ export function threeView(container, clouds) {
     view = { renderer, camera, controls, scene: null };
     const loop = () => {
       controls.update();
-      if (view.scene) renderer.render(view.scene, camera);
+      if (view.scene && container.offsetParent !== null) renderer.render(view.scene, camera); // only when shown
       requestAnimationFrame(loop);
     };
     loop();
