@@ -25,7 +25,7 @@ HEADERS = {"X-Coindie-Token": TOKEN}
 @pytest.fixture
 def served(fresh_project):
     source = open_source(fresh_project, threshold=0.5)
-    return source, TestClient(create_app(source, TOKEN))
+    return source, TestClient(create_app(source, TOKEN), base_url="http://127.0.0.1:8765")
 
 
 def _pair(source) -> tuple[str, str]:
@@ -55,6 +55,9 @@ def test_serve_refuses_missing_and_wrong_token_and_foreign_host(served):
     foreign = client.get("/api/state", headers={**HEADERS, "Host": "evil.example:8765"})
     assert foreign.status_code == 400 and "evil.example" in foreign.json()["error"]
     assert client.get("/", headers={"Host": "evil.example"}).status_code == 400
+    assert client.get("/api/state", headers={**HEADERS, "Host": "127.0.0.1.evil.example"}).status_code == 400
+    for own in ("localhost:8765", "127.0.0.1", "[::1]:8765"):
+        assert client.get("/api/state", headers={**HEADERS, "Host": own}).status_code == 200, own
 
 
 def test_serve_token_in_url_sets_a_cookie_for_images(served):
@@ -255,7 +258,7 @@ def test_serve_bare_beard_graph_loads_without_images(tmp_path):
     graph_path = tmp_path / "graph.json"
     shutil.copy(RIEDONES3D / "beard_probability_graph.json", graph_path)
     source = open_source(graph_path)
-    client = TestClient(create_app(source, TOKEN))
+    client = TestClient(create_app(source, TOKEN), base_url="http://127.0.0.1:8765")
     state = client.get("/api/state", headers=HEADERS).json()
     assert len(state["nodes"]) == 81 and len(state["edges"]) == 3240 and not state["has_images"]
     response = client.get("/api/faces/L1D/thumbnail.png", headers=HEADERS)  # padding-tolerant id

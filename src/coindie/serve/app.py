@@ -73,7 +73,7 @@ def _threshold(value: str | None, default: float) -> float:
 
 def create_app(source: ReviewSource, token: str, hosts: set[str] | None = None) -> FastAPI:
     """The app for ``source``; requests must carry ``token`` and a Host among ``hosts`` (host names)."""
-    allowed = {h.lower() for h in (hosts or set())} | {"127.0.0.1", "localhost", "[::1]", "testserver"}
+    allowed = {h.lower() for h in (hosts or set())} | {"127.0.0.1", "localhost", "[::1]"}
     app = FastAPI(title="coindie review", docs_url=None, redoc_url=None, openapi_url=None)
 
     @app.middleware("http")
