@@ -42,7 +42,12 @@ def main() -> None:
             page.press("#search", "Enter")
             page.wait_for_function(f"document.getElementById('face-id')?.textContent === '{face}'")
             image_spread(page, "#panel img.thumb")
-            page.wait_for_timeout(1500)
+            page.evaluate(  # the whole graph again, the face still selected
+                "() => { const c = window.coindie; c.matches = null; "
+                "c.renderer.getCamera().setState({x: 0.5, y: 0.5, ratio: 1, angle: 0}); "
+                "c.renderer.refresh(); }"
+            )
+            page.wait_for_timeout(4000)
             page.screenshot(path=str(args.out / "review-graph.png"))
             page.click("#neighbours tr.neighbour >> nth=0")
             page.wait_for_selector("#pair:not([hidden])")
