@@ -46,7 +46,7 @@ demo: $(STAMP)
 		$(VENV)/bin/coindie serve $(DEMO_OUT)/project --threshold 0.5; \
 	fi
 
-test: $(STAMP)
+test: $(STAMP) chromium
 	$(VENV)/bin/ruff check src tests benchmarks
 	$(PY) -m pytest -n 2 -q
 
