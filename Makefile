@@ -6,7 +6,9 @@ PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed
 DEMO_OUT ?= demo-out
 
-.PHONY: demo test lint system-deps clean
+DEMO_SERVE ?= 1
+
+.PHONY: demo test lint system-deps clean chromium frontend
 
 # System libraries some back-ends need (Open3D's shared library loads libusb); installed when root.
 system-deps:
@@ -16,16 +18,35 @@ system-deps:
 		fi; \
 	else echo "system-deps: not root or no apt-get; make sure libusb-1.0-0 is installed"; fi
 
+# Debian's chromium for the review app's end-to-end tests (Playwright drives it by executable_path:
+# Playwright's own browser download is not used). Installed when root and missing.
+chromium:
+	@if [ ! -x /usr/bin/chromium ]; then \
+		if [ "$$(id -u)" = "0" ] && command -v apt-get >/dev/null; then \
+			apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium >/dev/null; \
+		else echo "chromium: not root or no apt-get; the end-to-end tests will be skipped"; fi; \
+	fi
+
+# The review app's front end (sigma.js, graphology, three.js) bundled by esbuild into src/coindie/serve/static
+# (committed: running coindie serve needs no node).
+frontend:
+	cd frontend && npm ci --no-audit --no-fund && npm run build
+
 $(STAMP): pyproject.toml requirements-dev.txt
 	$(MAKE) --no-print-directory system-deps
+	$(MAKE) --no-print-directory chromium
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install -q -r requirements-dev.txt -e .
 	touch $(STAMP)
 
 demo: $(STAMP)
 	$(VENV)/bin/coindie demo $(DEMO_OUT)
+	@if [ "$(DEMO_SERVE)" != "0" ]; then \
+		echo "Review the clusters in the browser (Ctrl-C stops; DEMO_SERVE=0 skips this):"; \
+		$(VENV)/bin/coindie serve $(DEMO_OUT)/project --threshold 0.5; \
+	fi
 
-test: $(STAMP)
+test: $(STAMP) chromium
 	$(VENV)/bin/ruff check src tests benchmarks
 	$(PY) -m pytest -n 2 -q
 

@@ -24,3 +24,25 @@ def training_hoard(tmp_path_factory) -> Path:
     )
     synthesize(out, preset="tiny", seed=3, physics=physics, workers=1)
     return out
+
+
+# ------------------------------------------------------------------------------ the review app (serve)
+@pytest.fixture(scope="session")
+def review_project(tmp_path_factory) -> Path:
+    """A small scored project (a few dozen faces), built once and shared by the xdist workers."""
+    import os
+
+    from serve_support import build_project
+
+    if os.environ.get("COINDIE_TEST_REVIEW_ROOT"):  # a folder to build it in once and keep (development)
+        return build_project(Path(os.environ["COINDIE_TEST_REVIEW_ROOT"]))
+    base = tmp_path_factory.getbasetemp()  # xdist: the workers' common parent is this session's
+    return build_project((base.parent if os.environ.get("PYTEST_XDIST_WORKER") else base) / "serve-project")
+
+
+@pytest.fixture
+def fresh_project(review_project, tmp_path) -> Path:
+    """A copy of ``review_project`` whose edit log a test may write."""
+    from serve_support import copy_project
+
+    return copy_project(review_project, tmp_path / "project")

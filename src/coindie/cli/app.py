@@ -92,6 +92,7 @@ from coindie.cli import numismatics as _numismatics  # noqa: E402,F401
 from coindie.cli import project as _project  # noqa: E402,F401
 from coindie.cli import registration as _registration  # noqa: E402,F401
 from coindie.cli import scans as _scans  # noqa: E402,F401
+from coindie.cli import serve as _serve  # noqa: E402,F401
 from coindie.cli import similarity as _similarity  # noqa: E402,F401
 from coindie.cli import synth as _synth  # noqa: E402,F401
 from coindie.cli import train as _train  # noqa: E402,F401

@@ -53,7 +53,14 @@ def cluster_command(
     else:
         tau = PAPER_THRESHOLD if threshold is None else threshold
         how = "given" if threshold is not None else "the paper's"
-    clusters = cluster(graph, method, tau)
+    corrections = _corrections(source, graph)
+    if corrections is None:
+        clusters = cluster(graph, method, tau)
+    else:  # the experts' edits (coindie serve), replayed by the same function as the browser's
+        from coindie.clustering.corrections import corrected_clusters
+
+        clusters = corrected_clusters(graph, corrections, tau, method)
+        how += f", with {len(corrections.active)} expert edits"
     write_clusters(clusters, out)
     sizes = [len(c) for c in clusters.clusters()]
     if as_json:
@@ -75,6 +82,22 @@ def _graph(source: Path):  # noqa: ANN202
 
         return open_project(source).probability_graph()
     return read_graph(source)
+
+
+def _corrections(source: Path, graph):  # noqa: ANN001, ANN202
+    """The replayed edit log of a project, or of a graph file's sidecar; None when there is none."""
+    from coindie.project.edits import EditLog, sidecar_path
+
+    if source.is_dir():
+        log = EditLog.of_project(source)
+    elif sidecar_path(source).is_file():
+        log = EditLog(sidecar_path(source))
+    else:
+        return None
+    try:
+        return log.corrections(graph) if log.last_seq() else None
+    finally:
+        log.close()
 
 
 @app.command("eval")

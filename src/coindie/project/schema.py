@@ -85,6 +85,10 @@ CREATE TABLE IF NOT EXISTS labels (
     die TEXT NOT NULL,
     source TEXT NOT NULL
 );
+"""
+
+#: The experts' edit log (also the whole schema of a bare graph.json's sidecar log, coindie serve).
+EDITS_SCHEMA = """
 -- The experts' edits (the web app): an append-only log, replayed in order.
 CREATE TABLE IF NOT EXISTS edits (
     edit_id INTEGER PRIMARY KEY AUTOINCREMENT,
@@ -100,6 +104,8 @@ BEGIN SELECT RAISE(ABORT, 'the edits log is append-only'); END;
 CREATE TRIGGER IF NOT EXISTS edits_no_delete BEFORE DELETE ON edits
 BEGIN SELECT RAISE(ABORT, 'the edits log is append-only'); END;
 """
+
+SCHEMA += EDITS_SCHEMA
 
 PRAGMAS = (
     "PRAGMA journal_mode=WAL",
