@@ -57,26 +57,36 @@ def project_dies(
     folder: str | Path, method: str = "components", threshold: float | None = None, auto: bool = False
 ) -> dict[str, SideDies]:
     """The project's die clusters per side, as ``coindie cluster PROJECT`` makes them: at ``threshold``
-    (the paper's 0.95 by default) or, with ``auto``, at each side's threshold of best silhouette
-    (``coindie cluster --auto``)."""
-    from coindie.clustering import PAPER_THRESHOLD, cluster, select_threshold_unsupervised
+    (the paper's 0.95 by default) or, with ``auto``, at the threshold of the hoard's own score populations
+    (the silhouette's where they do not separate: ``coindie cluster --auto``), the experts' edits of the
+    review app replayed (``coindie.project.edits``)."""
+    from coindie.clustering import PAPER_THRESHOLD
+    from coindie.clustering.corrections import corrected_clusters, replay
     from coindie.project import open_project
+    from coindie.project.edits import EditLog
 
     if auto and threshold is not None:
         raise ParameterError("give a threshold or auto, not both")
     project = open_project(folder)
     out: dict[str, SideDies] = {}
-    for side in SIDES:
-        graph = project.probability_graph(side)
-        if graph.n_nodes == 0:
-            continue
-        tau = PAPER_THRESHOLD if threshold is None else threshold
-        how = "the paper's" if threshold is None else "given"
-        if auto and graph.n_nodes >= 3:
-            tau, how = select_threshold_unsupervised(graph, method).threshold, "best silhouette"
-        clusters = cluster(graph, method, tau)
-        labels = {face: f"{side}{label}" for face, label in clusters.labels.items()}
-        out[side] = SideDies(side, labels, f"{project.folder} ({method}, threshold {tau:g}, {how})")
+    log = EditLog.of_project(project.folder)
+    try:
+        for side in SIDES:
+            graph = project.probability_graph(side)
+            if graph.n_nodes == 0:
+                continue
+            tau = PAPER_THRESHOLD if threshold is None else threshold
+            how = "the paper's" if threshold is None else "given"
+            if auto and graph.n_nodes >= 3:
+                tau, how = project.auto_threshold(side, method)
+            # the log covers both sides: each side replays the edits about its own faces
+            on_side = set(graph.nodes)
+            edits = [e for e in log.edits() if e.touched() <= on_side]
+            clusters = corrected_clusters(graph, replay(graph, edits), tau, method)
+            labels = {face: f"{side}{label}" for face, label in clusters.labels.items()}
+            out[side] = SideDies(side, labels, f"{project.folder} ({method}, threshold {tau:g}, {how})")
+    finally:
+        log.close()
     if not out:
         raise ParameterError(
             f"{project.folder}: no usable faces yet (prepare and score them with coindie run)"
