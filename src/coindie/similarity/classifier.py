@@ -117,13 +117,7 @@ class SameDieClassifier:
         return (X - self.mean) / self.std
 
     def _checked_histograms(self, histograms: ArrayLike) -> FloatArray:
-        X = np.atleast_2d(np.asarray(histograms, dtype=np.float64))
-        bins = self.settings.bins
-        if X.ndim != 2 or X.shape[1] != bins:
-            raise ParameterError(f"histograms must be (n, {bins}) arrays. Got shape {X.shape}.")
-        if not np.isfinite(X).all():
-            raise ParameterError("histograms contain NaN or infinite values")
-        return X
+        return checked_rows(histograms, self.settings.bins, "histograms")
 
     # ---------------------------------------------------------------------------------------- files
 
@@ -171,21 +165,11 @@ class SameDieClassifier:
         return model
 
     def save(self, path: str | Path) -> Path:
-        path = Path(path)
-        path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_text(json.dumps(self.to_dict(), indent=1) + "\n")
-        return path
+        return write_model(path, self.to_dict())
 
     @classmethod
     def load(cls, path: str | Path) -> SameDieClassifier:
-        path = Path(path)
-        try:
-            data = json.loads(path.read_text())
-        except FileNotFoundError:
-            raise ClassifierError(f"{path}: no such classifier file") from None
-        except (OSError, UnicodeDecodeError, json.JSONDecodeError) as error:
-            raise ClassifierError(f"{path}: not a JSON classifier file ({error})") from None
-        return cls.from_dict(data, path)
+        return cls.from_dict(read_model(path), path)
 
     @classmethod
     def load_default(cls) -> SameDieClassifier:
@@ -226,3 +210,31 @@ class SameDieClassifier:
             C=C, settings=settings, mean=mean * factor, std=std * factor, fixed_scaler=True,
             metadata={"scaler": path.name, "scaler_rescaled_by": factor},
         )  # fmt: skip
+
+
+def checked_rows(X: ArrayLike, width: int, what: str) -> FloatArray:
+    """``X`` as a finite (n, ``width``) float array, or a ParameterError naming ``what``."""
+    rows = np.atleast_2d(np.asarray(X, dtype=np.float64))
+    if rows.ndim != 2 or rows.shape[1] != width:
+        raise ParameterError(f"{what} must be (n, {width}) arrays. Got shape {rows.shape}.")
+    if not np.isfinite(rows).all():
+        raise ParameterError(f"{what} contain NaN or infinite values")
+    return rows
+
+
+def read_model(path: str | Path) -> dict[str, Any]:
+    """A model file's JSON, or a ClassifierError naming the file."""
+    path = Path(path)
+    try:
+        return json.loads(path.read_text())
+    except FileNotFoundError:
+        raise ClassifierError(f"{path}: no such classifier file") from None
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as error:
+        raise ClassifierError(f"{path}: not a JSON classifier file ({error})") from None
+
+
+def write_model(path: str | Path, data: dict[str, Any]) -> Path:
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(json.dumps(data, indent=1) + "\n")
+    return path

@@ -22,7 +22,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from coindie.errors import ParameterError
-from coindie.similarity.classifier import ClassifierError
+from coindie.similarity.classifier import ClassifierError, checked_rows, write_model
 from coindie.similarity.histogram import HistogramSettings
 from coindie.similarity.logistic import fit_platt_logistic, sigmoid
 from coindie.similarity.relief_features import FEATURE_NAMES, ReliefFeatureSettings
@@ -103,12 +103,7 @@ class ReliefClassifier:
         return sigmoid(self.log_odds(features))
 
     def _checked(self, features: ArrayLike) -> FloatArray:
-        X = np.atleast_2d(np.asarray(features, dtype=np.float64))
-        if X.ndim != 2 or X.shape[1] != len(FEATURE_NAMES):
-            raise ParameterError(f"relief features must be (n, {len(FEATURE_NAMES)}) arrays. Got {X.shape}.")
-        if not np.isfinite(X).all():
-            raise ParameterError("relief features contain NaN or infinite values")
-        return X
+        return checked_rows(features, len(FEATURE_NAMES), "relief features")
 
     # ---------------------------------------------------------------------------------------- files
 
@@ -165,10 +160,7 @@ class ReliefClassifier:
         return model
 
     def save(self, path: str | Path) -> Path:
-        path = Path(path)
-        path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_text(json.dumps(self.to_dict(), indent=1) + "\n")
-        return path
+        return write_model(path, self.to_dict())
 
     @classmethod
     def load_default(cls) -> ReliefClassifier:

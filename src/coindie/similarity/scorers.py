@@ -13,14 +13,13 @@ then adapts them to a hoard's own score distribution.
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 from typing import Any, Protocol
 
 from numpy.typing import ArrayLike, NDArray
 
 from coindie.errors import ParameterError
-from coindie.similarity.classifier import ClassifierError, SameDieClassifier
+from coindie.similarity.classifier import SameDieClassifier, read_model
 from coindie.similarity.histogram import HistogramSettings
 from coindie.similarity.relief_classifier import FORMAT as RELIEF_FORMAT
 from coindie.similarity.relief_classifier import ReliefClassifier
@@ -59,11 +58,4 @@ def scorer_from_dict(data: dict[str, Any], where: str | Path = "classifier") -> 
 
 def load_scorer(path: str | Path) -> Scorer:
     """A scorer's model file (``coindie train similarity`` writes either kind)."""
-    path = Path(path)
-    try:
-        data = json.loads(path.read_text())
-    except FileNotFoundError:
-        raise ClassifierError(f"{path}: no such classifier file") from None
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as error:
-        raise ClassifierError(f"{path}: not a JSON classifier file ({error})") from None
-    return scorer_from_dict(data, path)
+    return scorer_from_dict(read_model(path), path)
