@@ -140,7 +140,7 @@ def _evaluate(row: str, scorer_name: str, scorer: Any, project: Any, hoard: Path
     pairs = project.scored_pairs()
     faces = [s.face_id for s in project.scans("ok")]
     raw = np.array([_probability(p, scorer) for p in pairs])
-    valid = np.array([bool(p["valid"]) and _input(p, scorer).any() for p in pairs], dtype=bool)
+    valid = np.array([_scored(p, scorer) for p in pairs], dtype=bool)
     same = np.array([truth[p["source"]] == truth[p["target"]] for p in pairs], dtype=bool)
     calibrated, all_separate = np.zeros(len(pairs)), True
     populations = getattr(scorer, "populations", None) or None
@@ -171,11 +171,16 @@ def _input(pair: dict[str, Any], scorer: Any) -> np.ndarray:
     return np.zeros(1) if data is None else np.asarray(data)
 
 
+def _scored(pair: dict[str, Any], scorer: Any) -> bool:
+    """The registration found a pose, the scorer has something to read, and does not refuse the pair."""
+    residual = float("nan") if pair.get("residual") is None else float(pair["residual"])
+    return bool(pair["valid"]) and bool(_input(pair, scorer).any()) and not scorer.refuses(residual)
+
+
 def _probability(pair: dict[str, Any], scorer: Any) -> float:
-    data = _input(pair, scorer)
-    if not pair["valid"] or not data.any():
+    if not _scored(pair, scorer):
         return 0.0
-    return float(scorer.predict_proba(data[None, :])[0])
+    return float(scorer.predict_proba(_input(pair, scorer)[None, :])[0])
 
 
 def _seconds(pair: dict[str, Any], scorer: Any) -> float:

@@ -61,10 +61,27 @@ class SameDieClassifier:
     intercept: float = 0.0
     platt: tuple[float, float] = (1.0, 0.0)
     metadata: dict[str, Any] = field(default_factory=dict)
+    #: Pairs whose median point-to-plane residual (mm) exceeds this score 0 (0: none). The shipped model
+    #: was trained on pairs that passed the registration's old 0.02 mm test, so it keeps that test.
+    max_residual: float = 0.0
 
     def __post_init__(self) -> None:
         if not (isinstance(self.C, int | float) and self.C > 0):
             raise ParameterError(f"The 'C' parameter of SameDieClassifier must be positive. Got {self.C!r}.")
+        if not (isinstance(self.max_residual, int | float) and self.max_residual >= 0):
+            raise ParameterError(
+                "The 'max_residual' parameter of SameDieClassifier must be >= 0 mm. "
+                f"Got {self.max_residual!r}."
+            )
+
+    def refuses(self, residual: float) -> str:
+        """Why a pair of this residual (mm) scores 0 without the regression ("" when it does not)."""
+        if self.max_residual > 0 and not residual <= self.max_residual:
+            return (
+                f"median point-to-plane residual {residual:.4f} mm exceeds the paper scorer's "
+                f"{self.max_residual} mm"
+            )
+        return ""
 
     # ---------------------------------------------------------------------------------------- training
 
@@ -135,6 +152,7 @@ class SameDieClassifier:
             "coef": self.coef.tolist(),
             "intercept": self.intercept,
             "platt": {"a": self.platt[0], "b": self.platt[1]},
+            "acceptance": {"max_residual": self.max_residual},
             "metadata": self.metadata,
         }
 
@@ -155,6 +173,7 @@ class SameDieClassifier:
                 intercept=float(data["intercept"]),
                 platt=(float(data["platt"]["a"]), float(data["platt"]["b"])),
                 metadata=dict(data.get("metadata", {})),
+                max_residual=float(data.get("acceptance", {}).get("max_residual", 0.0)),
             )
         except (KeyError, TypeError, ValueError) as error:
             raise ClassifierError(f"{where}: not a usable classifier file ({error})") from None

@@ -64,6 +64,10 @@ class ReliefClassifier:
     def is_fitted(self) -> bool:
         return self.coef is not None and self.mean is not None and self.scale is not None
 
+    def refuses(self, residual: float) -> str:
+        """No pair is refused for its residual: a residual in mm measures the scanner as much as the die."""
+        return ""
+
     def fit(self, features: ArrayLike, same_die: ArrayLike, *, seed: int = 0) -> ReliefClassifier:
         """Fit on ``features`` (n, len(FEATURE_NAMES)) and boolean labels ``same_die``; returns ``self``."""
         X = transform_features(self._checked(features))

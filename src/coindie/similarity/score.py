@@ -52,6 +52,9 @@ class PairScore:
         aligned point within range of the target, or no overlap of the two reliefs)."""
         if not self.valid:
             return replace(self, probability=0.0)
+        refused = classifier.refuses(self.residual)
+        if refused:
+            return replace(self, probability=0.0, reason=refused)
         mark = time.perf_counter()
         reads = self.histogram if classifier.INPUT == "histogram" else self.features
         if reads.any():
