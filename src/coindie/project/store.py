@@ -323,7 +323,7 @@ class Project:
         ]
         weights = np.array([float(p["probability"] or 0.0) for p in pairs])
         if calibrated:
-            valid = np.array([bool(p["valid"]) for p in pairs], dtype=bool)
+            valid = np.array([scored(p) for p in pairs], dtype=bool)
             for one_side in {p["side"] for p in pairs}:
                 on = np.array([p["side"] == one_side for p in pairs])
                 prior, what = self._calibration_start(one_side, params_hash)
@@ -365,7 +365,7 @@ class Project:
         pairs = self.scored_pairs(params_hash, side)
         probabilities = [float(p["probability"] or 0.0) for p in pairs]
         prior, what = self._calibration_start(side, params_hash)
-        valid = [bool(p["valid"]) for p in pairs]
+        valid = [scored(p) for p in pairs]
         return calibrated_probabilities(probabilities, valid, prior=prior, what=what)[1]
 
     def _calibration_start(
@@ -375,6 +375,12 @@ class Project:
         prior = json.loads(prior_text) if prior_text else {}
         name = {"D": "obverse", "R": "reverse"}.get(side, side)
         return {k: (float(v[0]), float(v[1])) for k, v in prior.items()} or None, f"{name} pairs"
+
+
+def scored(pair: Mapping[str, Any]) -> bool:
+    """Whether a done pair was scored: its registration found a pose, and the scorer did not refuse it
+    (a refusal leaves probability 0 with its reason)."""
+    return bool(pair["valid"]) and not (pair.get("reason") and not pair.get("probability"))
 
 
 def decode_pair(row: sqlite3.Row) -> dict[str, Any]:
