@@ -67,10 +67,12 @@ def run_generalization(
     workers: int = 2,
     riedones_scale: float = 0.05,
     models: dict[str, Any] | None = None,
+    evaluate_only: bool = False,
     echo: Callable[[str], None] = print,
 ) -> list[RowResult]:
     """Run (or resume) every row; write ``results.csv``, ``results.json``, ``results.md`` and
-    ``generalization.png`` in ``out``; return the results."""
+    ``generalization.png`` in ``out``; return the results. ``evaluate_only``: apply the scorers to the
+    pairs the rows' projects already hold (other models, another threshold rule), running nothing."""
     out = Path(out)
     rows = list(rows) if rows else benchmark_rows()
     known = set(benchmark_rows())
@@ -80,8 +82,17 @@ def run_generalization(
     models = models or _shipped_models()
     results: list[RowResult] = []
     for k, row in enumerate(rows):
-        hoard = _hoard(out / "hoards" / row.replace(":", "-"), row, seed + k, workers, riedones_scale)
-        project = _project(out / "projects" / row.replace(":", "-"), hoard, workers)
+        name = row.replace(":", "-")
+        if evaluate_only:
+            from coindie.project import open_project
+
+            if not (out / "projects" / name / "project.sqlite").exists():
+                echo(f"{row:>16}: no project yet in {out / 'projects' / name}, left out")
+                continue
+            hoard, project = out / "hoards" / name, open_project(out / "projects" / name)
+        else:
+            hoard = _hoard(out / "hoards" / name, row, seed + k, workers, riedones_scale)
+            project = _project(out / "projects" / name, hoard, workers)
         for scorer in SCORER_NAMES:
             result = _evaluate(row, scorer, models[scorer], project, hoard)
             results.append(result)
@@ -91,6 +102,8 @@ def run_generalization(
                 f"(tau {result.threshold:g} {result.threshold_from})"
             )
         write_results(out, results)
+    if not results:
+        raise ParameterError(f"no row of {rows} has a project in {out / 'projects'}")
     return results
 
 

@@ -114,6 +114,10 @@ def generalization(
     seed: Annotated[int, typer.Option(help="Seed of the first row's hoard (the next rows count up).")] = 1000,
     workers: Annotated[int, typer.Option(help="Worker processes.")] = 2,
     riedones_scale: Annotated[float, typer.Option(help="Scale of the riedones preset's row.")] = 0.05,
+    evaluate_only: Annotated[
+        bool,
+        typer.Option(help="Score the pairs the rows' projects hold with the shipped models; run nothing."),
+    ] = False,
 ) -> None:
     """Die clustering, scans only and shipped defaults, on hoards of other scanners, flans and wear:
     FMI, ARI, same-die pairs refused, pair AUC and time per pair, for the relief and paper scorers."""
@@ -123,6 +127,7 @@ def generalization(
         raise ParameterError(f"--workers must be at least 1. Got {workers}.")
     chosen = [r.strip() for r in rows.split(",") if r.strip()] or None
     run_generalization(
-        out, chosen, seed=seed, workers=workers, riedones_scale=riedones_scale, echo=typer.echo
-    )
+        out, chosen, seed=seed, workers=workers, riedones_scale=riedones_scale,
+        evaluate_only=evaluate_only, echo=typer.echo,
+    )  # fmt: skip
     typer.echo((out / "results.md").read_text())
