@@ -72,3 +72,13 @@ def test_refused_pairs_stay_at_zero_and_too_few_pairs_do_not_calibrate() -> None
     assert calibration.refused == 50 and np.all(calibrated[:50] == 0)
     few = calibrate_hoard(probabilities[:5])
     assert not few.separates and "only 5" in few.message
+
+
+def test_most_pairs_same_die_is_implausible_for_every_pair_but_not_for_candidates() -> None:
+    """Among every pair of a side most are of different dies; candidate search picks each face's nearest
+    faces, mostly of its own die."""
+    probabilities, same_die = _mixture(0.7, 1000, seed=8)
+    every_pair = calibrate_hoard(probabilities)
+    assert not every_pair.separates and "more than 50%" in every_pair.message
+    candidates = calibrate_hoard(probabilities, max_same_share=0.95)
+    assert candidates.separates and abs(candidates.same_share - same_die.mean()) < 0.03

@@ -23,7 +23,13 @@ import numpy as np
 from coindie.errors import CoinDieError
 from coindie.ids import FaceId, parse_face_id
 from coindie.project.schema import PRAGMAS, SCHEMA, SCHEMA_VERSION
-from coindie.similarity.calibration import MIXTURE_THRESHOLD, HoardCalibration, calibrated_probabilities
+from coindie.similarity.calibration import (
+    MAX_SAME_SHARE,
+    MAX_SAME_SHARE_CANDIDATES,
+    MIXTURE_THRESHOLD,
+    HoardCalibration,
+    calibrated_probabilities,
+)
 
 if TYPE_CHECKING:
     from coindie.clustering import ProbabilityGraph
@@ -327,7 +333,10 @@ class Project:
             for one_side in {p["side"] for p in pairs}:
                 on = np.array([p["side"] == one_side for p in pairs])
                 prior, what = self._calibration_start(one_side, params_hash)
-                weights[on], _ = calibrated_probabilities(weights[on], valid[on], prior=prior, what=what)
+                cap = _max_same_share([p for p, o in zip(pairs, on, strict=True) if o])
+                weights[on], _ = calibrated_probabilities(
+                    weights[on], valid[on], prior=prior, what=what, max_same_share=cap
+                )
         edges = [(p["source"], p["target"], float(w)) for p, w in zip(pairs, weights, strict=True)]
         return ProbabilityGraph.from_edges(edges, faces, where=str(self.folder))
 
@@ -366,7 +375,8 @@ class Project:
         probabilities = [float(p["probability"] or 0.0) for p in pairs]
         prior, what = self._calibration_start(side, params_hash)
         valid = [scored(p) for p in pairs]
-        return calibrated_probabilities(probabilities, valid, prior=prior, what=what)[1]
+        cap = _max_same_share(pairs)
+        return calibrated_probabilities(probabilities, valid, prior=prior, what=what, max_same_share=cap)[1]
 
     def _calibration_start(
         self, side: str, params_hash: str | None
@@ -375,6 +385,13 @@ class Project:
         prior = json.loads(prior_text) if prior_text else {}
         name = {"D": "obverse", "R": "reverse"}.get(side, side)
         return {k: (float(v[0]), float(v[1])) for k, v in prior.items()} or None, f"{name} pairs"
+
+
+def _max_same_share(pairs: list[dict[str, Any]]) -> float:
+    """Every pair of a side: most are of different dies; candidates: each face's nearest, mostly its own."""
+    if any(p.get("origin") == "candidates" for p in pairs):
+        return MAX_SAME_SHARE_CANDIDATES
+    return MAX_SAME_SHARE
 
 
 def scored(pair: Mapping[str, Any]) -> bool:

@@ -34,8 +34,11 @@ FloatArray = NDArray[np.float64]
 
 #: Ashman's D between the two components below which they are not told apart.
 MIN_SEPARATION = 2.0
-#: Largest share of same-die pairs a hoard's mixture may claim: most same-side pairs are of different dies.
+#: Largest share of same-die pairs a hoard's mixture may claim: most of *all* same-side pairs are of
+#: different dies. Pairs planned by candidate search are each face's nearest faces, mostly of its own die,
+#: and may be up to :data:`MAX_SAME_SHARE_CANDIDATES` same-die.
 MAX_SAME_SHARE = 0.5
+MAX_SAME_SHARE_CANDIDATES = 0.95
 #: Fewest scored pairs a mixture is fitted on.
 MIN_PAIRS = 10
 #: Log-odds are clipped to +-this before fitting (a probability of exactly 0 or 1 has no finite logit).
@@ -100,10 +103,13 @@ def calibrate_hoard(
     refused: int = 0,
     prior: Mapping[str, tuple[float, float]] | None = None,
     what: str = "same-side pairs",
+    max_same_share: float = MAX_SAME_SHARE,
 ) -> HoardCalibration:
     """Fit the two populations of a hoard's scored pairs (``probabilities`` of the pairs whose
     registration found a pose; ``refused`` the others). ``prior``: the scorer's training populations
-    ``{"same": (mean, sd), "different": (mean, sd)}`` of the log-odds, where EM starts."""
+    ``{"same": (mean, sd), "different": (mean, sd)}`` of the log-odds, where EM starts.
+    ``max_same_share``: the largest plausible same-die share (:data:`MAX_SAME_SHARE` for every pair of
+    a side, :data:`MAX_SAME_SHARE_CANDIDATES` for pairs planned by candidate search)."""
     z = log_odds(probabilities).ravel()
     total = len(z) + refused
     if refused < 0:
@@ -119,7 +125,7 @@ def calibrate_hoard(
     refused_note = (
         f"; {refused} of {total} ({refused / total:.0%}) refused by the registration" if refused else ""
     )
-    failures = _implausible(separation, share, len(z), mean_s)
+    failures = _implausible(separation, share, len(z), mean_s, max_same_share)
     if failures:
         reason = (
             f"the scores of {len(z)} {what} do not separate into same-die and different-die populations "
@@ -144,18 +150,23 @@ def calibrated_probabilities(
     *,
     prior: Mapping[str, tuple[float, float]] | None = None,
     what: str = "same-side pairs",
+    max_same_share: float = MAX_SAME_SHARE,
 ) -> tuple[FloatArray, HoardCalibration]:
     """The hoard-calibrated probability of each pair of one side (0 where the registration was refused,
     ``valid`` False), and the calibration."""
     p = np.asarray(probabilities, dtype=np.float64)
     ok = np.asarray(valid, dtype=bool)
-    calibration = calibrate_hoard(p[ok], refused=int((~ok).sum()), prior=prior, what=what)
+    calibration = calibrate_hoard(
+        p[ok], refused=int((~ok).sum()), prior=prior, what=what, max_same_share=max_same_share
+    )
     out = np.zeros_like(p)
     out[ok] = calibration.probability(log_odds(p[ok]))
     return out, calibration
 
 
-def _implausible(separation: float, share: float, n: int, mean_same: float) -> list[str]:
+def _implausible(
+    separation: float, share: float, n: int, mean_same: float, max_same_share: float
+) -> list[str]:
     """Why a fitted mixture is not a same-die / different-die split ([] when it is): its components
     overlap; its upper one holds less than one pair, or most pairs (most pairs of a hoard are of
     different dies); or its typical member is judged different-die by the scorer itself (log-odds < 0:
@@ -166,8 +177,8 @@ def _implausible(separation: float, share: float, n: int, mean_same: float) -> l
         failures.append(f"Ashman's D {separation:.2f} < {MIN_SEPARATION:g}")
     if share * n < 1.0:
         failures.append(f"upper component {share:.1%} of the pairs, less than one pair")
-    if share > MAX_SAME_SHARE:
-        failures.append(f"upper component {share:.1%} of the pairs, more than {MAX_SAME_SHARE:.0%}")
+    if share > max_same_share:
+        failures.append(f"upper component {share:.1%} of the pairs, more than {max_same_share:.0%}")
     if mean_same < 0.0:
         failures.append("its typical pair is judged different-die by the scorer (mean log-odds < 0)")
     return failures
