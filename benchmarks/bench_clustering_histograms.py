@@ -40,9 +40,9 @@ def main(argv: list[str] | None = None) -> int:
     out = args.out or args.bench
 
     from coindie.bench.clustering import THRESHOLD_FROM, chosen_faces, pair_figures, probability_graph
-    from coindie.bench.truth import load_truth
     from coindie.cli.progress import counting_progress
     from coindie.clustering import cluster, evaluate, select_threshold
+    from coindie.io.truth import load_truth
     from coindie.similarity import HistogramSettings, SameDieClassifier, c2c_histogram
     from coindie.similarity.batch import read_scores
 

@@ -39,8 +39,8 @@ def main(argv: list[str] | None = None) -> int:
     out.mkdir(parents=True, exist_ok=True)
 
     from coindie.bench.clustering import GROUPS, SPLITS, THRESHOLD_FROM, chosen_faces, probability_graph
-    from coindie.bench.truth import load_truth
     from coindie.clustering import METHODS, cluster, evaluate, select_threshold
+    from coindie.io.truth import load_truth
     from coindie.similarity import SameDieClassifier
     from coindie.similarity.batch import read_scores
 

@@ -3,11 +3,11 @@
     .venv/bin/python benchmarks/bench_fcgf_turns.py HOARD --out DIR [--epochs 2] [--pairs 250]
 
 Each run trains a fresh FCGF (16-32-64-128, the paper's loss, SGD and augmentation, 4 mm crops) for
-``epochs x pairs`` steps through ``coindie.learned.train``, with the two faces of each training pair turned
-alike within ±180°/spins (``FCGFConfig.spins``), and measures after each epoch the held-out inlier ratio
-(mutual nearest neighbours of 2000 random points per face, within 0.3 mm of the truth) on held-out pairs
-turned within the same tolerance. ``paper``: the paper's recipe (faces turned apart by up to ±180°,
-tilted apart by up to ±25°, no levelling). Writes ``turns.md`` (the table) and ``turns.png`` into DIR.
+``epochs x pairs`` steps through ``coindie.registration.learned.train``, with the two faces of each training
+pair turned alike within ±180°/spins (``FCGFConfig.spins``), and measures after each epoch the held-out
+inlier ratio (mutual nearest neighbours of 2000 random points per face, within 0.3 mm of the truth) on
+held-out pairs turned within the same tolerance. ``paper``: the paper's recipe (faces turned apart by up to
+±180°, tilted apart by up to ±25°, no levelling). Writes ``turns.md`` (the table) and ``turns.png`` into DIR.
 Nothing passes or fails: it measures why coindie's FCGF searches turns instead of learning them.
 """
 
@@ -24,8 +24,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 from rich.progress import Progress  # noqa: E402
 
 from coindie.bench.machine import describe_machine  # noqa: E402
-from coindie.learned.fcgf import FCGFConfig  # noqa: E402
-from coindie.learned.train import TrainOptions, train_fcgf  # noqa: E402
+from coindie.registration.learned.fcgf import FCGFConfig  # noqa: E402
+from coindie.registration.learned.train import TrainOptions, train_fcgf  # noqa: E402
 
 #: (label, level, spins): the tolerance is ±180°/spins.
 RUNS = (

@@ -22,10 +22,10 @@ import torch
 from rich.progress import track
 
 from coindie.bench.registration import _grid_scan
-from coindie.bench.truth import load_truth
-from coindie.learned.dip import DIPDescriptor
-from coindie.learned.fcgf import FCGFDescriptor
-from coindie.registration.geometry import Cloud
+from coindie.io.truth import load_truth
+from coindie.registration.clouds import Cloud
+from coindie.registration.learned.dip import DIPDescriptor
+from coindie.registration.learned.fcgf import FCGFDescriptor
 
 
 def main() -> None:

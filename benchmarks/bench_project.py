@@ -143,7 +143,7 @@ def cpu_costs(project_dir: Path, n_faces: int = 16, batch_faces: int = 12) -> di
 
     from coindie.project import open_project
     from coindie.project.run import RunConfig, _cache_files, _scorer, tile_batches
-    from coindie.project.work import FaceTask, PairBatch, face_params_hash, prepare_face, score_batch
+    from coindie.project.workers import FaceTask, PairBatch, face_params_hash, prepare_face, score_batch
 
     project = open_project(project_dir)
     scans = project.scans("ok")[:n_faces]

@@ -23,9 +23,9 @@ from rich.progress import track
 from threadpoolctl import threadpool_limits
 
 from coindie.bench.registration import _grid_scan, parse_method, plan_pairs
-from coindie.bench.truth import load_truth
-from coindie.learned.cache import clear_caches
+from coindie.io.truth import load_truth
 from coindie.registration import get_method
+from coindie.registration.learned.cache import clear_caches
 
 
 def main() -> None:

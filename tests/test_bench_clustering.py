@@ -10,9 +10,9 @@ import pytest
 from typer.testing import CliRunner
 
 from coindie.bench.clustering import BenchOptions, benchmark_clustering, chosen_faces
-from coindie.bench.truth import load_truth
 from coindie.cli.app import app
 from coindie.clustering import evaluate, read_clusters, read_graph
+from coindie.io.truth import load_truth
 
 DEFAULT_MODEL = Path(str(resources.files("coindie") / "data" / "same_die_classifier.json"))
 

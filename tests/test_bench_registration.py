@@ -11,8 +11,8 @@ import pytest
 from typer.testing import CliRunner
 
 from coindie.bench.registration import benchmark_registration, plan_pairs, random_turn, read_pairs
-from coindie.bench.truth import TruthError, load_truth
 from coindie.cli.app import app
+from coindie.io.truth import TruthError, load_truth
 from coindie.preprocess.frames import rotation_angle_deg
 
 

@@ -8,10 +8,10 @@ import torch
 from scipy.spatial.transform import Rotation
 
 from coindie.errors import CoinDieError, ParameterError
-from coindie.learned.dip import DIPConfig, DIPDescriptor, load_model, save_model
-from coindie.learned.dip_network import DIPNet, embed
-from coindie.learned.lrf import canonical_patches, local_frames, patch_indices, patches, to_local
-from coindie.registration.geometry import Cloud, transform_points
+from coindie.registration.clouds import Cloud, transform_points
+from coindie.registration.learned.dip import DIPConfig, DIPDescriptor, load_model, save_model
+from coindie.registration.learned.dip_network import DIPNet, embed
+from coindie.registration.learned.lrf import canonical_patches, local_frames, patch_indices, patches, to_local
 from coindie.registration.testing import make_coin_pair, rigid_transform
 
 RADIUS = 1.0
@@ -192,9 +192,9 @@ TRAINABLE = DIPConfig(radius=1.5, n_points=64, voxel=0.2, widths=(16, 32), head=
 
 
 def test_training_steps_lower_the_loss_of_a_pair_of_faces(training_hoard) -> None:
-    from coindie.learned.learners import DIPLearner
-    from coindie.learned.pairs import VALIDATION, PairSet
-    from coindie.learned.train import TrainOptions
+    from coindie.registration.learned.learners import DIPLearner
+    from coindie.registration.learned.pairs import VALIDATION, PairSet
+    from coindie.registration.learned.train import TrainOptions
 
     pair = PairSet(training_hoard, voxel=TRAINABLE.voxel).make(0, [0, 1, 0], VALIDATION)
     options = TrainOptions(model=TRAINABLE, patches=128)
@@ -216,7 +216,7 @@ def test_training_steps_lower_the_loss_of_a_pair_of_faces(training_hoard) -> Non
 
 
 def test_a_training_run_writes_a_model_that_the_descriptor_loads(training_hoard, tmp_path) -> None:
-    from coindie.learned.train import DIP_MODEL, TrainOptions, train_dip
+    from coindie.registration.learned.train import DIP_MODEL, TrainOptions, train_dip
 
     options = TrainOptions(model=TRAINABLE, epochs=2, max_pairs=1, fmr_points=300, patches=64)
     log = train_dip(training_hoard, tmp_path / "run", options)

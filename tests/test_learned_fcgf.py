@@ -15,8 +15,9 @@ from scipy.spatial.transform import Rotation  # noqa: E402
 from typer.testing import CliRunner  # noqa: E402
 
 from coindie.errors import ParameterError  # noqa: E402
-from coindie.learned import fcgf as fcgf_module  # noqa: E402
-from coindie.learned.fcgf import (  # noqa: E402
+from coindie.registration.clouds import Cloud  # noqa: E402
+from coindie.registration.learned import fcgf as fcgf_module  # noqa: E402
+from coindie.registration.learned.fcgf import (  # noqa: E402
     FCGFConfig,
     FCGFDescriptor,
     ModelFileError,
@@ -25,9 +26,8 @@ from coindie.learned.fcgf import (  # noqa: E402
     new_model,
     save_model,
 )
-from coindie.learned.losses import ContrastiveLoss  # noqa: E402
-from coindie.learned.train import CHECKPOINT, CURVES, LOG, MODEL, TrainOptions, train_fcgf  # noqa: E402
-from coindie.registration.geometry import Cloud  # noqa: E402
+from coindie.registration.learned.losses import ContrastiveLoss  # noqa: E402
+from coindie.registration.learned.train import CHECKPOINT, CURVES, LOG, MODEL, TrainOptions, train_fcgf  # noqa: E402
 
 #: A coarse voxel keeps the clouds small (~1-4k voxels) so that every test runs in seconds.
 COARSE = FCGFConfig(voxel=0.3)

@@ -8,8 +8,9 @@ import numpy as np
 import pytest
 from scipy.spatial.transform import Rotation
 
-from coindie.bench.truth import FaceTruth, HoardTruth, TruthError, load_truth
-from coindie.learned.pairs import (
+from coindie.io.truth import FaceTruth, HoardTruth, TruthError, load_truth
+from coindie.registration.clouds import transform_points
+from coindie.registration.learned.pairs import (
     TRAINING,
     VALIDATION,
     Augmentation,
@@ -19,7 +20,6 @@ from coindie.learned.pairs import (
     match_points,
     split_pairs,
 )
-from coindie.registration.geometry import transform_points
 
 VOXEL = 0.2
 

@@ -9,7 +9,7 @@ torch = pytest.importorskip("torch")
 import torch.nn.functional as F  # noqa: E402
 
 from coindie.errors import ParameterError  # noqa: E402
-from coindie.learned.sparse import (  # noqa: E402
+from coindie.registration.learned.sparse import (  # noqa: E402
     DownConv,
     SparseTensor,
     SubmanifoldConv,

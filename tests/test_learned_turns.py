@@ -9,11 +9,18 @@ torch = pytest.importorskip("torch")
 
 from scipy.spatial.transform import Rotation  # noqa: E402
 
-from coindie.learned.fcgf import FCGFConfig, describe_cloud, describe_views, levelling, new_model, spin  # noqa: E402
-from coindie.learned.turns import TurnSearchRegistration  # noqa: E402
 from coindie.registration.base import Timer  # noqa: E402
+from coindie.registration.clouds import Cloud, FloatArray, IntArray, transform_points  # noqa: E402
 from coindie.registration.features import FeatureRegistration, MutualNN  # noqa: E402
-from coindie.registration.geometry import Cloud, FloatArray, IntArray, transform_points  # noqa: E402
+from coindie.registration.learned.fcgf import (  # noqa: E402
+    FCGFConfig,
+    describe_cloud,
+    describe_views,
+    levelling,
+    new_model,
+    spin,
+)
+from coindie.registration.learned.turns import TurnSearchRegistration  # noqa: E402
 from coindie.registration.metrics import rotation_error_deg, translation_error_mm  # noqa: E402
 from coindie.registration.teaser import TeaserSolver  # noqa: E402
 from coindie.registration.testing import make_coin_pair, rigid_transform  # noqa: E402
@@ -110,7 +117,7 @@ class _FirstView(_OracleViews):
 def test_a_turn_tolerant_pair_is_turned_alike_within_the_tolerance_and_keeps_its_truth(
     training_hoard,
 ) -> None:
-    from coindie.learned.pairs import TRAINING, PairSet, level_pair
+    from coindie.registration.learned.pairs import TRAINING, PairSet, level_pair
 
     pairs = PairSet(training_hoard, voxel=0.3)
     for index in range(min(3, len(pairs))):
@@ -132,7 +139,7 @@ def test_a_turn_tolerant_pair_is_turned_alike_within_the_tolerance_and_keeps_its
 
 
 def test_descriptor_caches_keep_the_last_clouds_until_cleared() -> None:
-    from coindie.learned.cache import DescriptorCache, clear_caches
+    from coindie.registration.learned.cache import DescriptorCache, clear_caches
 
     cache, computed = DescriptorCache(size=2), []
 
@@ -148,7 +155,7 @@ def test_descriptor_caches_keep_the_last_clouds_until_cleared() -> None:
 
 
 def test_the_shipped_weights_are_small_and_say_how_they_were_trained() -> None:
-    from coindie.learned.fcgf import SHIPPED_WEIGHTS, read_header
+    from coindie.registration.learned.fcgf import SHIPPED_WEIGHTS, read_header
 
     folder = SHIPPED_WEIGHTS.parent
     assert sum(f.stat().st_size for f in folder.iterdir()) <= 20 * 2**20  # the issue's budget: 20 MB
@@ -163,7 +170,7 @@ def _inlier_ratio(tilt_turn_deg: float, view: int | None) -> float:
     """Mutual matches between the shipped FCGF's descriptors of a face and of a copy of it tilted by
     (15°, -10°), turned by ``tilt_turn_deg`` about its axis and moved (``view``: that view of the copy);
     the share within 0.3 mm of the truth."""
-    from coindie.learned.fcgf import FCGFDescriptor
+    from coindie.registration.learned.fcgf import FCGFDescriptor
 
     pair = make_coin_pair(seed=5, radius=6.0, T_target_source=np.eye(4))
     face = Cloud(pair.target.points, pair.target.normals)

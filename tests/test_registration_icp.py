@@ -15,10 +15,10 @@ from coindie.registration import (
     translation_error_mm,
 )
 from coindie.registration.base import Estimate
-from coindie.registration.geometry import Cloud, transform_points
+from coindie.registration.clouds import Cloud, transform_points
 from coindie.registration.metrics import inverse
+from coindie.registration.patch_icp import _patch
 from coindie.registration.quality import alignment, robust_score
-from coindie.registration.refine import _patch
 from coindie.registration.testing import CoinPair, make_coin_pair, rigid_transform
 
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from coindie.registration.geometry import Cloud
+from coindie.registration.clouds import Cloud
 from coindie.registration.projective import ProjectedCloud
 from coindie.registration.testing import rigid_transform
 

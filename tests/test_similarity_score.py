@@ -8,8 +8,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from coindie.bench.truth import load_truth
 from coindie.io import read_scan
+from coindie.io.truth import load_truth
 from coindie.registration import get_method
 from coindie.similarity import PairScore, SameDieClassifier, score_pair
 from coindie.similarity.batch import BatchConfig, PairTask, measure_pairs, read_scores, tiles

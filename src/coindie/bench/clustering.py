@@ -33,7 +33,6 @@ from typing import Any
 
 import numpy as np
 
-from coindie.bench.truth import FaceTruth, HoardTruth, load_truth
 from coindie.clustering import (
     METHODS,
     PAPER_THRESHOLD,
@@ -47,6 +46,7 @@ from coindie.clustering import (
     write_graph,
 )
 from coindie.errors import ParameterError
+from coindie.io.truth import FaceTruth, HoardTruth, load_truth
 from coindie.similarity import PairScore, SameDieClassifier
 from coindie.similarity.batch import BatchConfig, PairTask, measure_pairs
 

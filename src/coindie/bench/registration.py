@@ -27,8 +27,8 @@ import numpy as np
 from scipy.spatial.transform import Rotation
 
 from coindie.bench.machine import describe_machine
-from coindie.bench.truth import HoardTruth, load_truth
 from coindie.errors import ParameterError
+from coindie.io.truth import HoardTruth, load_truth
 from coindie.scan import Scan
 
 #: The paper's benchmark: grid 0.1 mm, random rotations x, y in ±25°, z in ±180°.

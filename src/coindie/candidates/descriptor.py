@@ -2,7 +2,7 @@
 
 Built on the ``relief`` method's per-face image (``coindie.registration.relief``): the high-passed relief
 of the face in its canonical frame, on a 0.2 mm grid. Then, as in the Fourier–Mellin rotation search of
-:mod:`coindie.registration.planar`:
+:mod:`coindie.registration.relief_search`:
 
 1. the magnitude of the image's 2-D Fourier transform does not change when the coin is translated (a
    strike off-centre, a scan not centred) and turns with the coin;
@@ -117,7 +117,7 @@ def face_descriptor(scan: Scan, settings: DescriptorSettings | None = None) -> N
     """The descriptor of a face (grid-sampled at 0.1 mm, as the ``relief`` method registers it): its relief
     image made exactly as the ``relief`` method makes it, then :func:`relief_descriptor`."""
     from coindie.registration import get_method
-    from coindie.registration.geometry import Cloud
+    from coindie.registration.clouds import Cloud
 
     pipeline = get_method("relief")
     prepared = pipeline.estimator.prepare(Cloud.canonical(scan))  # type: ignore[attr-defined]

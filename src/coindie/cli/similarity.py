@@ -45,8 +45,8 @@ def similarity(
 ) -> None:
     """Register labelled pairs, measure them (relief features and distance histogram), fit the calibrated
     logistic regression of the chosen scorer."""
-    from coindie.bench.truth import load_truth
     from coindie.cli.progress import counting_progress
+    from coindie.io.truth import load_truth
     from coindie.registration import list_methods
     from coindie.similarity import HistogramSettings, SameDieClassifier
     from coindie.similarity.batch import BatchConfig

@@ -87,7 +87,7 @@ def fcgf(
 ) -> None:
     """Train FCGF as the paper did: contrastive loss with hardest negatives, SGD, augmented pairs."""
     from coindie.errors import CoinDieError
-    from coindie.learned.fcgf import FCGFConfig
+    from coindie.registration.learned.fcgf import FCGFConfig
 
     try:
         model = FCGFConfig(voxel=voxel, channels=_channels(channels), level=level, spins=spins)
@@ -125,7 +125,7 @@ def dip(
 ) -> None:
     """Train DIP (a PointNet on patches in their local frame) with the same loss, optimiser and pairs."""
     from coindie.errors import CoinDieError
-    from coindie.learned.dip import DIPConfig
+    from coindie.registration.learned.dip import DIPConfig
 
     try:
         model = DIPConfig(radius=radius, n_points=patch_points, voxel=voxel)
@@ -146,7 +146,7 @@ def _shared(options: dict[str, Any]) -> dict[str, Any]:
 
 
 def _run(data: Path, out: Path, model: Any, settings: dict[str, Any], resume: bool, quiet: bool) -> None:
-    from coindie.learned.train import CURVES, TrainOptions, train_fcgf
+    from coindie.registration.learned.train import CURVES, TrainOptions, train_fcgf
 
     options = TrainOptions(model=model, **settings)
     if quiet:

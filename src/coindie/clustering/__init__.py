@@ -6,9 +6,7 @@
 >>> write_clusters(clusters, "clusters.csv")  # doctest: +SKIP  (the paper's ``name, die``)
 """
 
-from coindie.clustering.evaluation import Evaluation, Mistake, evaluate, mistakes, pairwise_counts
-from coindie.clustering.graph import GraphError, ProbabilityGraph, read_graph, write_graph
-from coindie.clustering.methods import (
+from coindie.clustering.algorithms import (
     METHODS,
     PAPER_THRESHOLD,
     Clustering,
@@ -17,6 +15,8 @@ from coindie.clustering.methods import (
     read_clusters,
     write_clusters,
 )
+from coindie.clustering.evaluation import Evaluation, Mistake, evaluate, mistakes, pairwise_counts
+from coindie.clustering.graph import GraphError, ProbabilityGraph, read_graph, write_graph
 from coindie.clustering.threshold import (
     ThresholdChoice,
     select_threshold,

@@ -28,8 +28,8 @@ from typing import Any
 
 import numpy as np
 
+from coindie.clustering.algorithms import METHODS, Clustering, _relabelled, cluster
 from coindie.clustering.graph import ProbabilityGraph
-from coindie.clustering.methods import METHODS, Clustering, _relabelled, cluster
 from coindie.errors import ParameterError
 from coindie.ids import parse_face_id
 

@@ -19,9 +19,9 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
+from coindie.clustering.algorithms import cluster
 from coindie.clustering.evaluation import evaluate
 from coindie.clustering.graph import ProbabilityGraph
-from coindie.clustering.methods import cluster
 from coindie.errors import ParameterError
 
 FloatArray = NDArray[np.float64]

@@ -1,7 +1,7 @@
 """A run of a project: per-face work once, then the pairs of each side in batches, committed as they come.
 
 1. **Faces** (O(n)): every new or changed scan is hashed, grid-sampled and described by a worker
-   (:func:`coindie.project.work.prepare_face`); a bad scan is recorded with its error and left out.
+   (:func:`coindie.project.workers.prepare_face`); a bad scan is recorded with its error and left out.
 2. **Plan**: per side (obverses with and without beard together, reverses), either every pair
    (exhaustive) or the candidate pairs of :mod:`coindie.candidates` (each face's K nearest faces by
    descriptor). ``auto`` (the default) is exhaustive up to ``AUTO_EXHAUSTIVE_MAX_FACES`` faces per side
@@ -10,7 +10,7 @@
    plans only what is not there yet.
 3. **Pairs**: the todo pairs are ordered so that linked faces are close (reverse Cuthill–McKee on the
    pair graph), cut into tiles of at most ``batch_faces`` x ``batch_faces`` faces, and scored by the
-   workers (:func:`coindie.project.work.score_batch`). Each batch's results are committed in one
+   workers (:func:`coindie.project.workers.score_batch`). Each batch's results are committed in one
    transaction: killing the run at any moment loses at most the batches in flight, and no committed pair
    is ever computed again.
 """
@@ -35,7 +35,7 @@ from coindie import __version__
 from coindie.errors import CoinDieError
 from coindie.project.backends import Backend, WorkerLost, make_backend
 from coindie.project.store import Project, ProjectError, now
-from coindie.project.work import (
+from coindie.project.workers import (
     PAIR_FUNCTION_VERSION,
     FaceTask,
     PairBatch,

@@ -5,7 +5,7 @@
 >>> result.T_target_source, result.valid, result.residual  # doctest: +SKIP
 """
 
-from coindie.registration import methods as _methods  # noqa: F401  (registers the built-in methods)
+from coindie.registration import catalogue as _catalogue  # noqa: F401  (registers every method)
 from coindie.registration.base import (
     CorrespondenceSolver,
     Estimate,
@@ -25,10 +25,10 @@ from coindie.registration.features import FPFH, FeatureExtractor, FeatureRegistr
 from coindie.registration.icp import PointToPlaneICP, point_to_plane_icp
 from coindie.registration.metrics import rotation_error_deg, scaled_registration_error, translation_error_mm
 from coindie.registration.params import Configurable, Param, param
+from coindie.registration.patch_icp import PatchICP
 from coindie.registration.quality import Acceptance
 from coindie.registration.random_search import RandomSearch
 from coindie.registration.ransac import RansacSolver
-from coindie.registration.refine import PatchICP
 from coindie.registration.teaser import TeaserSolver
 
 __all__ = [

@@ -6,11 +6,11 @@ from dataclasses import dataclass
 from typing import Protocol
 
 from coindie.registration.base import Estimate, Estimator, Timer
-from coindie.registration.geometry import Cloud
+from coindie.registration.clouds import Cloud
 
 
 class Refinement(Protocol):
-    """Improves an estimate locally (e.g. :class:`~coindie.registration.refine.PatchICP`)."""
+    """Improves an estimate locally (e.g. :class:`~coindie.registration.patch_icp.PatchICP`)."""
 
     def refine(self, source: Cloud, target: Cloud, first: Estimate) -> Estimate: ...
 

@@ -14,7 +14,7 @@ from typing import Protocol
 import numpy as np
 
 from coindie.registration.base import CorrespondenceSolver, Estimate, Matches, Timer
-from coindie.registration.geometry import Cloud, FloatArray, IntArray, content_rng
+from coindie.registration.clouds import Cloud, FloatArray, IntArray, content_rng
 from coindie.registration.params import Configurable, param
 from coindie.scan import Scan
 

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import ndimage
 
-from coindie.registration.geometry import BoolArray, Cloud, FloatArray, IntArray, transform_points
+from coindie.registration.clouds import BoolArray, Cloud, FloatArray, IntArray, transform_points
 
 
 @dataclass(frozen=True, eq=False)

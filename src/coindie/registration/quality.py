@@ -16,7 +16,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from coindie.registration.geometry import Cloud, FloatArray, transform_points
+from coindie.registration.clouds import Cloud, FloatArray, transform_points
 from coindie.registration.params import Configurable, param
 
 

@@ -29,7 +29,7 @@ from coindie.preprocess.frames import rigid
 from coindie.preprocess.orientation import pca_transform, up_axis
 from coindie.preprocess.sampling import grid_sample
 from coindie.registration.base import Estimate, Timer
-from coindie.registration.geometry import Cloud, FloatArray, content_rng
+from coindie.registration.clouds import Cloud, FloatArray, content_rng
 from coindie.registration.icp import MIN_CORRESPONDENCES, point_to_plane_icp
 from coindie.registration.metrics import inverse
 from coindie.registration.params import Configurable, param

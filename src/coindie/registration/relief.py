@@ -7,7 +7,8 @@ Per face, once (cached by content):
     3. the polar log-spectrum of that image (for the rotation search) and a sample of relief points
        (for the ICP).
 Per pair:
-    4. planar alignment (:mod:`coindie.registration.planar`): the rotation about z from the spectra, then
+    4. planar alignment (:mod:`coindie.registration.relief_search`): the rotation about z from the spectra,
+    then
        rotation choice and translation by masked normalised cross-correlation — a global search over every
        rotation and translation in a few FFTs, where random-search ICP tries starts one by one;
     5. the 2-D result lifted to 3-D through both canonical frames;
@@ -26,12 +27,12 @@ from scipy import ndimage
 
 from coindie.preprocess.canonical import CanonicalFrame, canonical_frame
 from coindie.preprocess.heightmap import height_map
-from coindie.registration.base import Estimate, Timer, register_method
-from coindie.registration.geometry import BoolArray, Cloud, FloatArray, IntArray, transform_points
+from coindie.registration.base import Estimate, Timer
+from coindie.registration.clouds import BoolArray, Cloud, FloatArray, IntArray, transform_points
 from coindie.registration.icp import MIN_CORRESPONDENCES, IcpOutcome, point_to_plane_icp
 from coindie.registration.params import Configurable, param
-from coindie.registration.planar import ReliefImage, align_reliefs, pose_score
 from coindie.registration.projective import ProjectedCloud
+from coindie.registration.relief_search import ReliefImage, align_reliefs, pose_score
 from coindie.scan import Scan
 
 #: Points of the relief whose normal is within this angle of the face's up direction (the edge wall and
@@ -259,11 +260,3 @@ def _lift(T_planar: FloatArray, source: CanonicalFrame, target: CanonicalFrame) 
     T_canonical[:2, :2] = T_planar[:2, :2]
     T_canonical[:2, 3] = T_planar[:2, 2]
     return np.linalg.inv(target.T_canonical_scan) @ T_canonical @ source.T_canonical_scan
-
-
-register_method(
-    "relief",
-    lambda relief, icp: ReliefRegistration(relief, icp),
-    parts=(ReliefSearch, ReliefICP),
-    summary="ours: canonical frames + relief images, FFT search of rotation and translation, then ICP",
-)

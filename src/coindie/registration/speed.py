@@ -29,7 +29,7 @@ from coindie.registration import (
     scaled_registration_error,
     translation_error_mm,
 )
-from coindie.registration.geometry import FloatArray
+from coindie.registration.clouds import FloatArray
 from coindie.registration.metrics import inverse
 from coindie.registration.testing import make_coin_pair
 from coindie.scan import Scan

@@ -150,7 +150,7 @@ def main_normal(normals: FloatArray) -> FloatArray:
 def sampled_face(scan: Scan, grid_mm: float, max_normal_angle_rad: float) -> SampledFace:
     """The scan grid-sampled at ``grid_mm`` with the points facing away from its main normal removed,
     from a cache keyed by the scan's content and the two settings."""
-    from coindie.registration.geometry import content_key
+    from coindie.registration.clouds import content_key
 
     key = content_key(scan.points, scan.normals if scan.normals is not None else np.empty(0))
     key += np.array([grid_mm, max_normal_angle_rad], dtype=np.float64).tobytes()
@@ -179,7 +179,7 @@ _CACHE_LOCK = Lock()
 
 def _sample(scan: Scan, grid_mm: float, max_normal_angle_rad: float) -> SampledFace:
     from coindie.preprocess.sampling import grid_sample
-    from coindie.registration.geometry import with_normals
+    from coindie.registration.clouds import with_normals
 
     sampled = grid_sample(with_normals(scan), grid_mm)
     normals = sampled.normals

@@ -193,7 +193,7 @@ _LOCK = Lock()
 
 
 def _prepared_target(target: Scan, settings: ReliefFeatureSettings) -> _Target:
-    from coindie.registration.geometry import content_key
+    from coindie.registration.clouds import content_key
 
     normals = target.normals if target.normals is not None else np.zeros_like(target.points)
     key = (content_key(target.points, normals), settings)

@@ -21,8 +21,8 @@ from pathlib import Path
 
 import numpy as np
 
-from coindie.bench.truth import FaceTruth, HoardTruth, hoard_recipe
 from coindie.errors import ParameterError
+from coindie.io.truth import FaceTruth, HoardTruth, hoard_recipe
 from coindie.similarity.batch import BatchConfig, PairTask, measure_pairs
 from coindie.similarity.classifier import SameDieClassifier
 from coindie.similarity.score import PairScore

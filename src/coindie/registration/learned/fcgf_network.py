@@ -1,4 +1,5 @@
-"""The FCGF network: a sparse U-Net giving each occupied voxel a unit descriptor (see coindie.learned.fcgf).
+"""The FCGF network: a sparse U-Net giving each occupied voxel a unit descriptor (see
+coindie.registration.learned.fcgf).
 
 Levels ``i = 0..L-1`` have voxels of ``voxel * 2**i`` and ``channels[i]`` channels. The encoder is a
 3x3x3 convolution then, at each coarser level, a stride-2 2x2x2 convolution; every level ends in a
@@ -13,8 +14,8 @@ from __future__ import annotations
 import torch
 from torch import Tensor, nn
 
-from coindie.learned.fcgf import FCGFConfig
-from coindie.learned.sparse import (
+from coindie.registration.learned.fcgf import FCGFConfig
+from coindie.registration.learned.sparse import (
     BatchNorm,
     DownConv,
     PointwiseConv,

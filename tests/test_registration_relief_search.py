@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from scipy import ndimage
 
-from coindie.registration.planar import (
+from coindie.registration.relief_search import (
     ReliefImage,
     align_reliefs,
     masked_ncc,

@@ -3,11 +3,11 @@
 ``train_fcgf(hoard, out, TrainOptions(epochs=380))`` runs SGD (lr 0.1, momentum 0.8, weight decay 1e-4,
 lr x 0.99 after each epoch) on the contrastive loss with hardest negatives, one augmented pair of faces of
 one die at a time. ``TrainOptions(model=DIPConfig())`` trains DIP the same way, on patches around the
-true matches (:mod:`coindie.learned.learners`). An FCGF model that levels its input gets levelled pairs,
-and one that searches ``spins`` turns when matching gets pairs turned apart by at most ±180°/spins
-(:meth:`coindie.learned.pairs.PairSet.make`). After each epoch it measures, on held-out pairs (whole
-dies, turned like the benchmark turns them, never scaled), the loss and the feature-match recall, and
-writes into ``out``:
+true matches (:mod:`coindie.registration.learned.learners`). An FCGF model that levels its input gets
+levelled pairs, and one that searches ``spins`` turns when matching gets pairs turned apart by at most
+±180°/spins (:meth:`coindie.registration.learned.pairs.PairSet.make`). After each epoch it measures, on
+held-out pairs (whole dies, turned like the benchmark turns them, never scaled), the loss and the
+feature-match recall, and writes into ``out``:
 
 - ``checkpoint.safetensors`` + ``checkpoint.json``: weights, optimizer state and epoch (``resume=True``
   continues from there, to the same result as an uninterrupted run);
@@ -33,13 +33,15 @@ from typing import Any
 import numpy as np
 import torch
 
-from coindie.bench.truth import hoard_recipe
 from coindie.errors import ParameterError
-from coindie.learned.dip import DIPConfig
-from coindie.learned.fcgf import FCGFConfig, config_path, count_parameters, torch_threads
-from coindie.learned.learners import Learner, ModelConfig, learner_for
-from coindie.learned.losses import ContrastiveLoss
-from coindie.learned.pairs import (
+from coindie.io.truth import hoard_recipe
+from coindie.registration.clouds import transform_points
+from coindie.registration.features import MutualNN
+from coindie.registration.learned.dip import DIPConfig
+from coindie.registration.learned.fcgf import FCGFConfig, config_path, count_parameters, torch_threads
+from coindie.registration.learned.learners import Learner, ModelConfig, learner_for
+from coindie.registration.learned.losses import ContrastiveLoss
+from coindie.registration.learned.pairs import (
     TRAINING,
     VALIDATION,
     Augmentation,
@@ -49,8 +51,6 @@ from coindie.learned.pairs import (
     level_pair,
     split_pairs,
 )
-from coindie.registration.features import MutualNN
-from coindie.registration.geometry import transform_points
 
 CHECKPOINT = "checkpoint.safetensors"
 MODEL = "fcgf.safetensors"

@@ -1,5 +1,5 @@
 """What the training loop needs to know of each network: build it, save it, its loss on a batch of pairs,
-its descriptors at chosen points. :mod:`coindie.learned.train` runs the same loop for both.
+its descriptors at chosen points. :mod:`coindie.registration.learned.train` runs the same loop for both.
 
 - FCGF describes every voxel of a cloud in one pass of the sparse U-Net; its loss takes the true matches
   of the whole clouds, with hardest negatives among random points of each cloud.
@@ -17,16 +17,16 @@ import numpy as np
 import torch
 from torch import nn
 
-from coindie.learned.dip import DIPConfig
-from coindie.learned.dip import save_model as save_dip
-from coindie.learned.fcgf import FCGFConfig, new_model
-from coindie.learned.fcgf import save_model as save_fcgf
-from coindie.learned.lrf import canonical_patches
-from coindie.learned.pairs import TrainingPair
-from coindie.registration.geometry import FloatArray, IntArray
+from coindie.registration.clouds import FloatArray, IntArray
+from coindie.registration.learned.dip import DIPConfig
+from coindie.registration.learned.dip import save_model as save_dip
+from coindie.registration.learned.fcgf import FCGFConfig, new_model
+from coindie.registration.learned.fcgf import save_model as save_fcgf
+from coindie.registration.learned.lrf import canonical_patches
+from coindie.registration.learned.pairs import TrainingPair
 
 if TYPE_CHECKING:
-    from coindie.learned.train import TrainOptions
+    from coindie.registration.learned.train import TrainOptions
 
 ModelConfig = FCGFConfig | DIPConfig
 Losses = dict[str, torch.Tensor]
@@ -136,7 +136,7 @@ class DIPLearner:
     kind: str = "dip"
 
     def new(self, config: ModelConfig, seed: int) -> nn.Module:
-        from coindie.learned.dip_network import DIPNet
+        from coindie.registration.learned.dip_network import DIPNet
 
         assert isinstance(config, DIPConfig)
         with torch.random.fork_rng(devices=[]):
@@ -190,7 +190,7 @@ class DIPLearner:
         generator: torch.Generator,
         at: tuple[IntArray, IntArray],
     ) -> tuple[Losses, FloatArray, FloatArray]:
-        from coindie.learned.dip_network import embed
+        from coindie.registration.learned.dip_network import embed
 
         config: DIPConfig = model.config
         rng = np.random.default_rng(0)

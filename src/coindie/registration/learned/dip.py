@@ -1,9 +1,9 @@
 """DIP descriptors (Poiesi & Boscaini 2021): a PointNet on patches expressed in their local reference frame.
 
-The network (:class:`~coindie.learned.dip_network.DIPNet`) maps a batch of canonical patches (points in
-their local reference frame, :func:`coindie.learned.lrf.canonical_patches`) to unit descriptors; rotation
-invariance comes from the frame, not from the network. torch is imported only when a network is built or
-loaded, so that registering the methods costs nothing.
+The network (:class:`~coindie.registration.learned.dip_network.DIPNet`) maps a batch of canonical patches
+(points in their local reference frame, :func:`coindie.registration.learned.lrf.canonical_patches`) to unit
+descriptors; rotation invariance comes from the frame, not from the network. torch is imported only when a
+network is built or loaded, so that registering the methods costs nothing.
 
 ``DIPDescriptor`` is the registration-side :class:`~coindie.registration.features.FeatureExtractor`. Its
 weights are a safetensors state dict plus a JSON :class:`DIPConfig` next to it (never pickled objects);
@@ -21,18 +21,18 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from coindie.errors import CoinDieError
-from coindie.learned.cache import DescriptorCache
-from coindie.learned.lrf import canonical_patches
+from coindie.registration.clouds import Cloud, FloatArray, IntArray, content_key
 from coindie.registration.features import grid_support
-from coindie.registration.geometry import Cloud, FloatArray, IntArray, content_key
+from coindie.registration.learned.cache import DescriptorCache
+from coindie.registration.learned.lrf import canonical_patches
 from coindie.registration.params import Configurable, param
 
 if TYPE_CHECKING:
-    from coindie.learned.dip_network import DIPNet
+    from coindie.registration.learned.dip_network import DIPNet
 
 #: The packaged weights (trained by `coindie train dip`, see BENCHMARK.md).
 PACKAGED_WEIGHTS = Path(__file__).parent / "weights" / "dip.safetensors"
-#: Descriptors of the last clouds described, per process (see coindie.learned.cache).
+#: Descriptors of the last clouds described, per process (see coindie.registration.learned.cache).
 _descriptor_cache = DescriptorCache(8)
 
 
@@ -95,7 +95,7 @@ def load_model(path: str | Path) -> DIPNet:
             raise CoinDieError(
                 f"{required}: no such file; DIP weights need {weights.name} and {description.name}"
             )
-    from coindie.learned.dip_network import DIPNet
+    from coindie.registration.learned.dip_network import DIPNet
 
     model = DIPNet(DIPConfig.from_json(description.read_text(), description))
     try:
@@ -149,7 +149,7 @@ class DIPDescriptor(Configurable):
         return _descriptor_cache.get(key, lambda: self._describe(support, at))
 
     def _describe(self, support: Cloud, at: IntArray) -> FloatArray:
-        from coindie.learned.dip_network import embed
+        from coindie.registration.learned.dip_network import embed
 
         model, rng = self.network, np.random.default_rng(self.seed)
         config: DIPConfig = model.config

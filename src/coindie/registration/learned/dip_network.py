@@ -1,10 +1,10 @@
-"""The DIP network: a PointNet on canonical patches (see :mod:`coindie.learned.dip`).
+"""The DIP network: a PointNet on canonical patches (see :mod:`coindie.registration.learned.dip`).
 
 ``DIPNet`` maps a batch of canonical patches, a (B, n_points, 3) float tensor of patch points in their
-local frame divided by the patch radius (:func:`coindie.learned.lrf.canonical_patches`), to (B, dim)
-unit-norm descriptors: a shared per-point MLP, max pooling over the points, an MLP head. Rotation
-invariance comes from the frame, not from the network. Kept apart from :mod:`coindie.learned.dip` so that
-registering the DIP methods does not import torch.
+local frame divided by the patch radius (:func:`coindie.registration.learned.lrf.canonical_patches`), to (B,
+dim) unit-norm descriptors: a shared per-point MLP, max pooling over the points, an MLP head. Rotation
+invariance comes from the frame, not from the network. Kept apart from
+:mod:`coindie.registration.learned.dip` so that registering the DIP methods does not import torch.
 """
 
 from __future__ import annotations
@@ -16,8 +16,8 @@ import torch
 from torch import nn
 from torch.nn import functional
 
-from coindie.learned.dip import DIPConfig
-from coindie.registration.geometry import FloatArray
+from coindie.registration.clouds import FloatArray
+from coindie.registration.learned.dip import DIPConfig
 
 
 class DIPNet(nn.Module):

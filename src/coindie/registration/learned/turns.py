@@ -1,7 +1,7 @@
 """Matching descriptors that are not invariant to turns about the coin's axis: search the turns.
 
-A model trained on pairs turned alike within ±180°/n (:class:`~coindie.learned.fcgf.FCGFConfig` ``spins =
-n``) describes the source once and the target at n turns about its axis (``describe_views``). The
+A model trained on pairs turned alike within ±180°/n (:class:`~coindie.registration.learned.fcgf.FCGFConfig`
+``spins = n``) describes the source once and the target at n turns about its axis (``describe_views``). The
 source's descriptors are matched to all n views at once, by mutual nearest neighbours: a source point's
 partner is its nearest descriptor over every view, and the views within the model's tolerance of the true
 turn are the ones whose descriptors agree. The matches (to the target's points, whichever view they came
@@ -16,8 +16,8 @@ from typing import Protocol
 
 import numpy as np
 
+from coindie.registration.clouds import Cloud, FloatArray, IntArray
 from coindie.registration.features import FeatureExtractor, FeatureRegistration
-from coindie.registration.geometry import Cloud, FloatArray, IntArray
 
 
 class ViewDescriptor(FeatureExtractor, Protocol):

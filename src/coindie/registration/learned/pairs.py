@@ -22,8 +22,8 @@ import numpy as np
 from scipy.spatial import cKDTree
 from scipy.spatial.transform import Rotation
 
-from coindie.bench.truth import HoardTruth, TruthError, load_truth
-from coindie.registration.geometry import FloatArray, IntArray, transform_points
+from coindie.io.truth import HoardTruth, TruthError, load_truth
+from coindie.registration.clouds import FloatArray, IntArray, transform_points
 
 FacePair = tuple[str, str]
 
@@ -198,7 +198,7 @@ class PairSet:
         if turn_tolerance_deg is None:
             A_source, A_target = augmentation.draw_pair(rng, source.mean(0), target.mean(0))
         else:
-            from coindie.learned.fcgf import levelling, spin
+            from coindie.registration.learned.fcgf import levelling, spin
 
             target_levelled = levelling(target, self.normals(b))
             turn = rng.uniform(-turn_tolerance_deg, turn_tolerance_deg)
@@ -218,9 +218,9 @@ class PairSet:
 
 
 def level_pair(pair: TrainingPair) -> TrainingPair:
-    """Both clouds turned so that their fitted planes are z = 0 (:func:`coindie.learned.fcgf.levelling`),
-    the truth between them carried along."""
-    from coindie.learned.fcgf import levelling
+    """Both clouds turned so that their fitted planes are z = 0
+    (:func:`coindie.registration.learned.fcgf.levelling`), the truth between them carried along."""
+    from coindie.registration.learned.fcgf import levelling
 
     L_source = levelling(pair.source, pair.source_normals)
     L_target = levelling(pair.target, pair.target_normals)

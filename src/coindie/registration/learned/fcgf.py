@@ -1,19 +1,19 @@
 """Fully Convolutional Geometric Features (Choy et al. 2019): a sparse U-Net giving each voxel a unit
 32-d descriptor, as the Riedones3D paper uses it (voxel 0.1 mm, input feature "ones").
 
-The network (:class:`~coindie.learned.network.FCGFNet`) is smaller than the original (8.8 M parameters,
-kernel 7 first layer) so that it trains on a CPU: encoder channels 16-32-64-128 over four levels (0.1, 0.2,
-0.4, 0.8 mm voxels), each level a 3x3x3 convolution or a stride-2 2x2x2 convolution then a residual block
-of two 3x3x3 convolutions; a decoder of transposed convolutions whose outputs are joined to the encoder's
-(skip connections) and fused by a 3x3x3 convolution; a per-voxel head of two linear layers; unit-normalised
-outputs. About 1.7 M parameters (6.6 MB in float32). Its receptive field spans ~5 mm, a few letters or a
-curl of hair.
+The network (:class:`~coindie.registration.learned.fcgf_network.FCGFNet`) is smaller than the original (8.8 M
+parameters, kernel 7 first layer) so that it trains on a CPU: encoder channels 16-32-64-128 over four levels
+(0.1, 0.2, 0.4, 0.8 mm voxels), each level a 3x3x3 convolution or a stride-2 2x2x2 convolution then a
+residual block of two 3x3x3 convolutions; a decoder of transposed convolutions whose outputs are joined to
+the encoder's (skip connections) and fused by a 3x3x3 convolution; a per-voxel head of two linear layers;
+unit-normalised outputs. About 1.7 M parameters (6.6 MB in float32). Its receptive field spans ~5 mm, a few
+letters or a curl of hair.
 
 The paper's FCGF learns invariance to rotations from augmentation alone; on a CPU it does not (its held-out
 inlier ratio stays at chance, docs/learned.md), so a model can instead level each face (its fitted plane
 to z = 0: exact invariance to tilts) and learn only small turns about the coin's axis (±180°/``spins``),
 the target then being described at ``spins`` turns and matched against all of them
-(:mod:`coindie.learned.turns`). The shipped model does so with 16 turns.
+(:mod:`coindie.registration.learned.turns`). The shipped model does so with 16 turns.
 
 :class:`FCGFDescriptor` is the registration's :class:`~coindie.registration.features.FeatureExtractor`:
 descriptors of the cloud grid-sampled at the model's voxel, from the shipped weights
@@ -34,8 +34,8 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from coindie.errors import CoinDieError, ParameterError
-from coindie.learned.cache import DescriptorCache
-from coindie.registration.geometry import Cloud, FloatArray, IntArray, content_key, transform_points
+from coindie.registration.clouds import Cloud, FloatArray, IntArray, content_key, transform_points
+from coindie.registration.learned.cache import DescriptorCache
 from coindie.registration.params import Configurable, param
 
 if TYPE_CHECKING:
@@ -126,7 +126,9 @@ def spin(angle_deg: float, centre: FloatArray) -> FloatArray:
 
 
 def _build_network(config: FCGFConfig) -> torch.nn.Module:
-    from coindie.learned.network import FCGFNet  # torch is imported here, not with this module
+    from coindie.registration.learned.fcgf_network import (
+        FCGFNet,  # torch is imported here, not with this module
+    )
 
     return FCGFNet(config)
 

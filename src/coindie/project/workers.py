@@ -100,7 +100,7 @@ def _prepare(task: FaceTask, start: float) -> dict[str, Any]:
     from coindie.candidates.descriptor import face_descriptor
     from coindie.io import read_scan
     from coindie.preprocess import grid_sample
-    from coindie.registration.geometry import MIN_POINTS, with_normals
+    from coindie.registration.clouds import MIN_POINTS, with_normals
 
     content_hash = file_hash(task.path)
     scan = read_scan(task.path)
