@@ -12,7 +12,7 @@ from coindie.registration.clouds import Cloud, transform_points
 from coindie.registration.learned.dip import DIPConfig, DIPDescriptor, load_model, save_model
 from coindie.registration.learned.dip_network import DIPNet, embed
 from coindie.registration.learned.lrf import canonical_patches, local_frames, patch_indices, patches, to_local
-from coindie.registration.testing import make_coin_pair, rigid_transform
+from synthetic_pairs import make_coin_pair, rigid_transform
 
 RADIUS = 1.0
 SMALL = DIPConfig(radius=RADIUS, n_points=64, widths=(16, 32), head=(16,), dim=32)

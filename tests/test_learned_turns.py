@@ -23,7 +23,7 @@ from coindie.registration.learned.fcgf import (  # noqa: E402
 from coindie.registration.learned.turns import TurnSearchRegistration  # noqa: E402
 from coindie.registration.metrics import rotation_error_deg, translation_error_mm  # noqa: E402
 from coindie.registration.teaser import TeaserSolver  # noqa: E402
-from coindie.registration.testing import make_coin_pair, rigid_transform  # noqa: E402
+from synthetic_pairs import make_coin_pair, rigid_transform  # noqa: E402
 
 
 @pytest.fixture(scope="module")

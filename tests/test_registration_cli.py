@@ -12,7 +12,7 @@ from typer.testing import CliRunner
 from coindie.cli.app import app
 from coindie.io import write_ply
 from coindie.registration import list_methods, rotation_error_deg, translation_error_mm
-from coindie.registration.testing import CoinPair, make_coin_pair, rigid_transform
+from synthetic_pairs import CoinPair, make_coin_pair, rigid_transform
 
 runner = CliRunner()
 

@@ -27,8 +27,8 @@ from coindie.registration import (
     translation_error_mm,
 )
 from coindie.registration.metrics import inverse
-from coindie.registration.testing import CoinPair, make_coin_pair, random_relief, rigid_transform, scan_relief
 from coindie.scan import Scan
+from synthetic_pairs import CoinPair, make_coin_pair, random_relief, rigid_transform, scan_relief
 
 RADIUS = 6.0
 #: (degrees, mm) a method's estimate must be within; methods not listed get DEFAULT_TOLERANCE.

@@ -25,7 +25,7 @@ from coindie.registration import base as registration_base
 from coindie.registration.base import Matches
 from coindie.registration.clouds import Cloud, IntArray, transform_points
 from coindie.registration.features import nearest_rows
-from coindie.registration.testing import make_coin_pair, rigid_transform
+from synthetic_pairs import make_coin_pair, rigid_transform
 
 
 @pytest.fixture(scope="module")

@@ -19,7 +19,7 @@ from coindie.registration.clouds import Cloud, transform_points
 from coindie.registration.metrics import inverse
 from coindie.registration.patch_icp import _patch
 from coindie.registration.quality import alignment, robust_score
-from coindie.registration.testing import CoinPair, make_coin_pair, rigid_transform
+from synthetic_pairs import CoinPair, make_coin_pair, rigid_transform
 
 
 @pytest.fixture(scope="module")

@@ -6,7 +6,7 @@ import numpy as np
 
 from coindie.registration.clouds import Cloud
 from coindie.registration.projective import ProjectedCloud
-from coindie.registration.testing import rigid_transform
+from synthetic_pairs import rigid_transform
 
 
 def _tilted_relief(seed: int) -> tuple[Cloud, np.ndarray]:

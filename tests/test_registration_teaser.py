@@ -11,7 +11,7 @@ from coindie.registration import Matches, TeaserSolver, rotation_error_deg, tran
 from coindie.registration.clique import consistency_graph, core_numbers, maximum_clique
 from coindie.registration.metrics import inverse
 from coindie.registration.teaser import adaptive_voting, gnc_tls_rotation
-from coindie.registration.testing import random_pose
+from synthetic_pairs import random_pose
 
 
 def outlier_matches(

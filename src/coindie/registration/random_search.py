@@ -8,7 +8,7 @@ is steep to the axis, the flan's edge wall, are left out) runs from every start 
 best are refined on the full clouds. Poses are ranked by the robust point-to-plane score, not by fitness,
 which is near 100 % for wrong turns of a dome (see :mod:`coindie.registration.quality`).
 
-Default of 36 starts (10° sectors): on the synthetic reliefs of :mod:`coindie.registration.testing` ICP
+Default of 36 starts (10° sectors): on the synthetic reliefs of the tests' ``synthetic_pairs`` ICP
 converges from up to ~15° away about the axis, and libraries.md saw pairs with a single converging start of
 24, so the sectors stay well inside the basin. Coarse ICP costs ~15–30 ms a start.
 

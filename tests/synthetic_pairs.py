@@ -1,4 +1,6 @@
-"""Synthetic coin faces with a known transform between them, for the registration tests and timings.
+"""Synthetic coin faces with a known transform between them, for the registration tests and
+``benchmarks/bench_registration_methods.py`` (a test helper, not part of the library: tests import it as
+``synthetic_pairs``, found like ``real_data`` on the tests' path).
 
 A small, self-contained generator (the hoard generator in ``coindie.synth`` models dies, striking and wear;
 this one only needs a surface two scans share): a shallow dome carrying a relief of Gaussian bumps and
