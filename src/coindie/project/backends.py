@@ -3,7 +3,13 @@
 Both hand results back as they finish, in any order, as ``(index, result)``; a task whose worker died is
 tried again on a fresh worker (``MAX_ATTEMPTS`` in all) and then reported as a :class:`WorkerLost` instead
 of a result, so that one poisonous batch cannot stop a run. Tasks must be pure: running one twice gives
-the same result, which is what makes retrying safe.
+the same result, which is what makes retrying safe. ``map_ordered`` hands the same results back in the
+tasks' order (for outputs that must not depend on which worker finished first).
+
+Every parallel job of coindie runs through a backend: the project's runs, the synthetic hoards
+(:mod:`coindie.synth.hoard`), the benchmarks (:mod:`coindie.bench`) and the measured pair batches of
+:mod:`coindie.similarity.batch`, which sit below this layer and so take ``backend.map_ordered`` from
+their caller.
 """
 
 from __future__ import annotations
@@ -37,14 +43,37 @@ class Backend(Protocol):
         self, function: Callable[[Any], Any], tasks: Sequence[Any]
     ) -> Iterator[tuple[int, Any]]: ...
 
+    def map_ordered(self, function: Callable[[Any], Any], tasks: Sequence[Any]) -> Iterator[Any]: ...
+
     def close(self) -> None: ...
+
+
+class _InOrder:
+    """``map_ordered`` for a backend that has ``map_unordered``: each result as soon as it and every
+    earlier task's result are in."""
+
+    def map_unordered(
+        self, function: Callable[[Any], Any], tasks: Sequence[Any]
+    ) -> Iterator[tuple[int, Any]]:
+        raise NotImplementedError
+
+    def map_ordered(self, function: Callable[[Any], Any], tasks: Sequence[Any]) -> Iterator[Any]:
+        """The tasks' results in order: a task that raised gives its exception (one local worker: raised
+        here), one whose worker was lost ``MAX_ATTEMPTS`` times a :class:`WorkerLost`."""
+        waiting: dict[int, Any] = {}
+        following = 0
+        for index, result in self.map_unordered(function, tasks):
+            waiting[index] = result
+            while following in waiting:
+                yield waiting.pop(following)
+                following += 1
 
 
 def default_workers() -> int:
     return max(1, os.cpu_count() or 1)
 
 
-class LocalProcesses:
+class LocalProcesses(_InOrder):
     """A pool of ``workers`` spawned processes (one BLAS thread each: ``import coindie`` sets it). With one
     worker the tasks run in this process (no pickling, easiest to debug)."""
 
@@ -118,7 +147,7 @@ class LocalProcesses:
             self._pool = None
 
 
-class DaskCluster:
+class DaskCluster(_InOrder):
     """A Dask ``distributed`` client: to a running scheduler (``tcp://host:8786``) or, with ``local``, to a
     ``LocalCluster`` of ``workers`` single-threaded processes started here and stopped at ``close``.
 

@@ -14,11 +14,9 @@ from __future__ import annotations
 import shutil
 import time
 from collections.abc import Callable, Iterator
-from concurrent.futures import ProcessPoolExecutor, as_completed
 from dataclasses import dataclass
 from datetime import UTC, datetime
 from functools import lru_cache
-from multiprocessing import get_context
 from pathlib import Path
 from typing import Any
 
@@ -26,8 +24,9 @@ import numpy as np
 from threadpoolctl import threadpool_limits
 
 from coindie import __version__
-from coindie.errors import ParameterError
+from coindie.errors import CoinDieError, ParameterError
 from coindie.io import write_ply
+from coindie.project.backends import WorkerLost, make_backend
 from coindie.synth.design import DieParams, Family, make_die, make_type
 from coindie.synth.face import make_face, sample_face_spec
 from coindie.synth.life import LifeParams
@@ -84,6 +83,7 @@ def synthesize(
     seed: int = 0,
     physics: PhysicsParams | NamedPhysics | str | None = None,
     workers: int = 1,
+    dask: str | None = None,
     progress: Progress | None = None,
     overwrite: bool = False,
     physics_name: str | None = None,
@@ -92,14 +92,16 @@ def synthesize(
 
     ``physics``: parameters, or a physics by name (``physics_by_name("wide")`` or the name itself, see
     :mod:`coindie.synth.physics`), resolved with the hoard's seed; its name (or ``physics_name``) goes to
-    ``hoard.json``.
+    ``hoard.json``. The faces are made by ``workers`` local processes, or on a Dask cluster when ``dask``
+    is its address or ``local`` (:mod:`coindie.project.backends`; the output depends on neither).
     """
     plan = plan_hoard(get_preset(preset, scale), seed)
     params, name = resolve_physics(physics, seed)
     name = physics_name or name
     return generate(
-        out_dir, plan, params, workers=workers, progress=progress, overwrite=overwrite, physics_name=name
-    )
+        out_dir, plan, params, workers=workers, dask=dask, progress=progress, overwrite=overwrite,
+        physics_name=name,
+    )  # fmt: skip
 
 
 def resolve_physics(
@@ -121,6 +123,7 @@ def generate(
     physics: PhysicsParams,
     *,
     workers: int = 1,
+    dask: str | None = None,
     progress: Progress | None = None,
     overwrite: bool = False,
     physics_name: str | None = None,
@@ -136,7 +139,7 @@ def generate(
     records = _reusable_records(out, digest(settings), plan)
     todo = [f for f in plan.faces if f.face_id not in records]
     tasks = _tasks(plan, todo, physics, out, digest(settings))
-    for made in _run(tasks, workers, len(records), len(plan.faces), progress):
+    for made in _run(tasks, workers, dask, len(records), len(plan.faces), progress):
         records.update(made)
     write_tables(out, plan)
     write_json(out / TRUTH_FILE, {"settings": digest(settings), **truth_document(plan, records)})
@@ -241,26 +244,34 @@ def _tasks(
 
 
 def _run(
-    tasks: list[_Task], workers: int, done: int, total: int, progress: Progress | None
+    tasks: list[_Task], workers: int, dask: str | None, done: int, total: int, progress: Progress | None
 ) -> Iterator[dict[str, dict[str, Any]]]:
     if progress:
         progress(done, total)
-    for made in _results(tasks, workers):
+    for made in _results(tasks, workers, dask):
         done += len(made)
         if progress:
             progress(done, total)
         yield made
 
 
-def _results(tasks: list[_Task], workers: int) -> Iterator[dict[str, dict[str, Any]]]:
-    if workers == 1 or len(tasks) <= 1:
+def _results(tasks: list[_Task], workers: int, dask: str | None) -> Iterator[dict[str, dict[str, Any]]]:
+    if (workers == 1 and not dask) or len(tasks) <= 1:
         yield from map(run_task, tasks)
         return
-    # forkserver: forking a process that runs threads (a progress bar) is unsafe.
-    with ProcessPoolExecutor(max_workers=workers, mp_context=get_context("forkserver")) as pool:
-        futures = [pool.submit(run_task, task) for task in tasks]
-        for future in as_completed(futures):
-            yield future.result()
+    # Spawned local processes (forking a process that runs threads, a progress bar, is unsafe) or Dask;
+    # a task whose worker died is run again (its faces are pure functions of the seed).
+    backend = make_backend(workers, dask)
+    try:
+        for index, made in backend.map_unordered(run_task, tasks):
+            if isinstance(made, WorkerLost):
+                faces = ", ".join(face_id for face_id, _ in tasks[index].faces)
+                raise CoinDieError(f"faces {faces} of die {tasks[index].die_id}: {made}") from made
+            if isinstance(made, BaseException):
+                raise made
+            yield made
+    finally:
+        backend.close()
 
 
 def run_task(task: _Task) -> dict[str, dict[str, Any]]:
