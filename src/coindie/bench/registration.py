@@ -18,7 +18,6 @@ import itertools
 import json
 import time
 from collections.abc import Callable, Iterable, Iterator
-from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
@@ -27,8 +26,9 @@ import numpy as np
 from scipy.spatial.transform import Rotation
 
 from coindie.bench.machine import describe_machine
-from coindie.errors import ParameterError
+from coindie.errors import CoinDieError, ParameterError
 from coindie.io.truth import HoardTruth, load_truth
+from coindie.project.backends import MAX_ATTEMPTS, WorkerLost, make_backend
 from coindie.scan import Scan
 
 #: The paper's benchmark: grid 0.1 mm, random rotations x, y in ±25°, z in ±180°.
@@ -174,12 +174,15 @@ def benchmark_registration(
     params: dict[str, dict[str, object]] | None = None,
     max_pairs: int | None = None,
     workers: int = 1,
+    dask: str | None = None,
     seed: int = 0,
     split: str = "registration_test",
     transforms: str | Path | None = None,
     progress: Callable[[int, int], None] | None = None,
 ) -> dict[str, dict[str, float]]:
-    """Run the benchmark (resuming ``out/pairs.csv``), write every output, return the summary."""
+    """Run the benchmark (resuming ``out/pairs.csv``), write every output, return the summary. Pairs run
+    on ``workers`` local processes, or on a Dask cluster when ``dask`` is its address or ``local``
+    (:mod:`coindie.project.backends`); a pair whose worker was lost is run again."""
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     truth = load_truth(data, transforms)
@@ -191,7 +194,7 @@ def benchmark_registration(
     if progress:
         progress(len(jobs) - len(todo), len(jobs))
     with _appender(pairs_csv) as append:
-        for row in _results(todo, workers):
+        for row in _results(todo, workers, dask):
             append(row)
             if progress:
                 progress(1, 0)
@@ -232,15 +235,38 @@ def _jobs(
     return sorted(jobs, key=lambda j: (j.target, j.method, j.source))
 
 
-def _results(jobs: list[PairJob], workers: int) -> Iterator[dict[str, object]]:
-    if workers <= 1 or len(jobs) <= 1:
+def _results(jobs: list[PairJob], workers: int, dask: str | None) -> Iterator[dict[str, object]]:
+    """The jobs' rows in the jobs' order (pairs.csv does not depend on the workers). Jobs go to the
+    workers in chunks of consecutive jobs (one target face: its per-face work is reused). A chunk whose
+    worker died ``MAX_ATTEMPTS`` times is left out of pairs.csv, the others go on, and the run then fails
+    naming its pairs (a rerun tries them again)."""
+    if (workers <= 1 and not dask) or len(jobs) <= 1:
         yield from map(run_pair, jobs)
         return
-    import multiprocessing
+    size = max(1, min(8, len(jobs) // (4 * max(1, workers))))
+    chunks = [tuple(jobs[i : i + size]) for i in range(0, len(jobs), size)]
+    backend = make_backend(workers, dask)
+    lost = []
+    try:
+        for chunk, rows in zip(chunks, backend.map_ordered(run_pairs, chunks), strict=True):
+            if isinstance(rows, WorkerLost):
+                lost += [f"{job.method} {job.source} -> {job.target}" for job in chunk]
+            elif isinstance(rows, BaseException):
+                raise rows
+            else:
+                yield from rows
+    finally:
+        backend.close()
+    if lost:
+        raise CoinDieError(
+            f"{len(lost)} pair(s) lost their worker {MAX_ATTEMPTS} times; run again to retry them: "
+            + ", ".join(lost)
+        )
 
-    context = multiprocessing.get_context("spawn")
-    with ProcessPoolExecutor(max_workers=workers, mp_context=context) as pool:
-        yield from pool.map(run_pair, jobs, chunksize=max(1, min(8, len(jobs) // (4 * workers))))
+
+def run_pairs(jobs: tuple[PairJob, ...]) -> list[dict[str, object]]:
+    """Register and score consecutive pairs (runs in a worker process)."""
+    return [run_pair(job) for job in jobs]
 
 
 class _appender:
