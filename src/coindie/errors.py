@@ -36,3 +36,8 @@ class LabelsError(CoinDieError, ValueError):
         self.path = Path(path) if path is not None else None
         self.problem = problem
         super().__init__(f"{self.path}: {problem}" if self.path is not None else problem)
+
+
+class WorkerLost(Exception):
+    """The worker running a task died (killed, out of memory) ``MAX_ATTEMPTS`` times
+    (:mod:`coindie.project.backends`): handed back in place of the task's result."""

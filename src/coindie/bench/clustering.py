@@ -47,6 +47,7 @@ from coindie.clustering import (
 )
 from coindie.errors import ParameterError
 from coindie.io.truth import FaceTruth, HoardTruth, load_truth
+from coindie.project.backends import Backend, make_backend
 from coindie.similarity import PairScore, SameDieClassifier
 from coindie.similarity.batch import BatchConfig, PairTask, measure_pairs
 
@@ -69,6 +70,7 @@ class BenchOptions:
     methods: tuple[str, ...] = METHODS
     groups: tuple[str, ...] = tuple(GROUPS)
     workers: int = 1
+    dask: str | None = None  # a Dask scheduler's address or "local": the pairs are measured there
     seed: int = 0
 
 
@@ -93,10 +95,16 @@ def benchmark_clustering(
         for group in GROUPS
         if group in wanted[split]
     }
-    classifier = _classifier(truth, out, options, progress)
-    config = BatchConfig(options.method, options.params, classifier.settings)
-    tasks = [t for group_faces in faces.values() for t in all_pairs(group_faces)]
-    scores = measure_pairs(tasks, out / "pairs.csv", config, workers=options.workers, progress=progress)
+    backend = make_backend(options.workers, options.dask)
+    try:
+        classifier = _classifier(truth, out, options, backend, progress)
+        config = BatchConfig(options.method, options.params, classifier.settings)
+        tasks = [t for group_faces in faces.values() for t in all_pairs(group_faces)]
+        scores = measure_pairs(
+            tasks, out / "pairs.csv", config, parallel_map=backend.map_ordered, progress=progress
+        )
+    finally:
+        backend.close()
     graphs = {key: probability_graph(f, scores, classifier) for key, f in faces.items()}
     for (split, group), graph in graphs.items():
         if graph.n_nodes:
@@ -234,7 +242,11 @@ def _oracle(test: ProbabilityGraph, truth: dict[str, str], method: str) -> dict[
 
 
 def _classifier(
-    truth: HoardTruth, out: Path, options: BenchOptions, progress: Callable[[int, int], None] | None
+    truth: HoardTruth,
+    out: Path,
+    options: BenchOptions,
+    backend: Backend,
+    progress: Callable[[int, int], None] | None,
 ) -> SameDieClassifier:
     if options.model is not None:
         return SameDieClassifier.load(options.model)
@@ -242,7 +254,8 @@ def _classifier(
 
     model = train_similarity(
         truth, out / "train_pairs.csv", config=BatchConfig(options.method, options.params),
-        max_pairs=options.train_pairs, max_faces=options.train_faces, workers=options.workers,
+        max_pairs=options.train_pairs, max_faces=options.train_faces,
+        parallel_map=backend.map_ordered,
         seed=options.seed, progress=progress,
     )  # fmt: skip
     model.save(out / "model.json")

@@ -8,6 +8,7 @@ from typing import Annotated
 import typer
 
 from coindie.cli.app import app, exits_cleanly
+from coindie.cli.options import Dask
 from coindie.errors import ParameterError
 
 bench = typer.Typer(help="Benchmarks that reproduce the paper's tables.", no_args_is_help=True)
@@ -28,6 +29,7 @@ def registration(
     ] = "relief",
     max_pairs: Annotated[int | None, typer.Option(help="At most this many pairs (dies take turns).")] = None,
     workers: Annotated[int, typer.Option(help="Worker processes.")] = 1,
+    dask: Dask = None,
     seed: Annotated[int, typer.Option(help="Seed of the random rotations.")] = 0,
     split: Annotated[str, typer.Option(help="Split whose dies are benchmarked.")] = "registration_test",
     transforms: Annotated[
@@ -52,7 +54,7 @@ def registration(
         raise ParameterError(f"--workers must be at least 1. Got {workers}.")
     with counting_progress("pairs") as progress:
         summary = benchmark_registration(
-            data, names, out, max_pairs=max_pairs, workers=workers, seed=seed, split=split,
+            data, names, out, max_pairs=max_pairs, workers=workers, dask=dask, seed=seed, split=split,
             transforms=transforms, progress=progress,
         )  # fmt: skip
     Console().print(Markdown((out / "summary.md").read_text().split("\n\nThe paper's")[0]))
@@ -78,6 +80,7 @@ def clustering(
         str, typer.Option("--clustering", help="Comma-separated: components, average, leiden.")
     ] = "components,average,leiden",
     workers: Annotated[int, typer.Option(help="Worker processes.")] = 1,
+    dask: Dask = None,
     seed: Annotated[int, typer.Option(help="Seed of the face and pair samples.")] = 0,
 ) -> None:
     """The paper's clustering benchmark (Table 3): FMI/ARI and clusters per group, τ by validation."""
@@ -95,7 +98,8 @@ def clustering(
     options = BenchOptions(
         method=method, model=model, max_faces=max_faces, train_pairs=train_pairs, train_faces=train_faces,
         methods=tuple(m.strip() for m in clustering_methods.split(",") if m.strip()),
-        groups=tuple(g.strip().upper() for g in groups.split(",") if g.strip()), workers=workers, seed=seed,
+        groups=tuple(g.strip().upper() for g in groups.split(",") if g.strip()), workers=workers, dask=dask,
+        seed=seed,
     )  # fmt: skip
     with counting_progress("pairs") as progress:
         benchmark_clustering(data, out, options, progress=progress)

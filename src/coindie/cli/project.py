@@ -8,6 +8,7 @@ from typing import Annotated
 import typer
 
 from coindie.cli.app import app, exits_cleanly
+from coindie.cli.options import Dask
 
 
 @app.command("init")
@@ -40,10 +41,7 @@ def run(
     project: Annotated[Path, typer.Argument(help="Project folder made by coindie init.")],
     method: Annotated[str, typer.Option(help="Registration method (see coindie methods).")] = "relief",
     workers: Annotated[int, typer.Option(help="Worker processes (0: one per core).")] = 0,
-    dask: Annotated[
-        str | None,
-        typer.Option(help="Dask scheduler address (tcp://host:8786), or 'local' for a LocalCluster."),
-    ] = None,
+    dask: Dask = None,
     exhaustive: Annotated[bool, typer.Option("--exhaustive", help="Score every pair of each side.")] = False,
     candidates: Annotated[
         int | None, typer.Option(help="Score only each face's K nearest faces by descriptor.")

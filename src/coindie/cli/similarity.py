@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
+from contextlib import closing
 from pathlib import Path
 from typing import Annotated
 
 import typer
 
 from coindie.cli.app import exits_cleanly
+from coindie.cli.options import Dask
 from coindie.cli.train import train
 from coindie.errors import ParameterError
 
@@ -41,12 +43,14 @@ def similarity(
         typer.Option(help="CSV of the measured pairs (resumed if present); default OUT.pairs.csv."),
     ] = None,
     workers: Annotated[int, typer.Option(help="Worker processes.")] = 1,
+    dask: Dask = None,
     seed: Annotated[int, typer.Option(help="Seed of the pair sample and the calibration folds.")] = 0,
 ) -> None:
     """Register labelled pairs, measure them (relief features and distance histogram), fit the calibrated
     logistic regression of the chosen scorer."""
     from coindie.cli.progress import counting_progress
     from coindie.io.truth import load_truth
+    from coindie.project.backends import make_backend
     from coindie.registration import list_methods
     from coindie.similarity import HistogramSettings, SameDieClassifier
     from coindie.similarity.batch import BatchConfig
@@ -73,11 +77,13 @@ def similarity(
         if paper_scaler
         else SameDieClassifier(settings=chosen)
     )
-    with counting_progress("pairs") as progress:
+    backend = make_backend(workers, dask)
+    with counting_progress("pairs") as progress, closing(backend):
         model = train_similarity(
             [load_truth(d) for d in data], work or out.with_suffix(".pairs.csv"), split=split,
             config=BatchConfig(method=method, settings=chosen), max_pairs=max_pairs or None,
-            negatives=negatives, max_faces=max_faces or None, classifier=classifier, workers=workers,
+            negatives=negatives, max_faces=max_faces or None, classifier=classifier,
+            parallel_map=backend.map_ordered,
             seed=seed, progress=progress,
         )  # fmt: skip
     model.save(out)

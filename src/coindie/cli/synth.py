@@ -10,6 +10,7 @@ from typing import Annotated
 import typer
 
 from coindie.cli.app import app, exits_cleanly
+from coindie.cli.options import Dask
 from coindie.errors import ParameterError
 
 
@@ -29,6 +30,7 @@ def synth(
     scale: Annotated[float, typer.Option(help="Shrink the preset proportionally (0 < S <= 1).")] = 1.0,
     seed: Annotated[int, typer.Option(help="Seed of the whole hoard.")] = 0,
     workers: Annotated[int, typer.Option(help="Worker processes (the output does not depend on it).")] = 1,
+    dask: Dask = None,
     physics: Annotated[
         str,
         typer.Option(
@@ -71,6 +73,7 @@ def synth(
             physics=params,
             physics_name=named.name if spacing is None else f"{named.name} (spacing {spacing} mm)",
             workers=workers,
+            dask=dask,
             progress=progress,
             overwrite=overwrite,
         )

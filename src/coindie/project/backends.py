@@ -22,18 +22,26 @@ from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wai
 from concurrent.futures.process import BrokenProcessPool
 from typing import Any, Protocol
 
-from coindie.errors import CoinDieError
+from coindie.errors import CoinDieError, WorkerLost
 
 #: A task whose worker died this many times is given up (reported as WorkerLost).
 MAX_ATTEMPTS = 3
 
 
+__all__ = [
+    "MAX_ATTEMPTS",
+    "Backend",
+    "BackendError",
+    "DaskCluster",
+    "LocalProcesses",
+    "WorkerLost",
+    "default_workers",
+    "make_backend",
+]
+
+
 class BackendError(CoinDieError):
     """The backend cannot start (no such Dask scheduler, dask.distributed not installed...)."""
-
-
-class WorkerLost(Exception):
-    """The worker running a task died (killed, out of memory) ``MAX_ATTEMPTS`` times."""
 
 
 class Backend(Protocol):

@@ -7,22 +7,27 @@ scan or a failing pair never stops the batch: its row says why (``valid`` False,
 
 Pairs are handed to the workers in tiles: all pairs between two blocks of faces, so that each worker's
 per-face caches (the registrar's and the histogram's, keyed by content) see each face many times in a row.
+
+The workers are the caller's: ``parallel_map`` maps :func:`measure_tile` over the tiles and hands the
+results back in order, as ``map`` does (the default: in this process). This layer sits below
+:mod:`coindie.project`, so it does not build the pool itself; callers pass a backend's
+``map_ordered`` (:mod:`coindie.project.backends`: local processes or Dask, a tile whose worker died run
+again). A result that is an exception is a tile whose worker was lost for good: its pairs are recorded as
+failed (``reason`` says so) and the batch goes on.
 """
 
 from __future__ import annotations
 
 import csv
-import itertools
 from collections.abc import Callable, Iterable, Iterator, Sequence
-from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import lru_cache, partial
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from coindie.errors import CoinDieError
+from coindie.errors import CoinDieError, WorkerLost
 from coindie.scan import Scan
 from coindie.similarity.histogram import HistogramSettings
 from coindie.similarity.relief_features import FEATURE_NAMES, ReliefFeatureSettings
@@ -34,6 +39,8 @@ FIELDS = (
     "source", "target", "method", "valid", "reason", "residual", "register_s", "histogram_s", "total_s",
     "T_target_source", "histogram", "features",
 )  # fmt: skip
+#: ``map``'s shape: a function over tasks, its results (or an exception for a lost task) in order.
+ParallelMap = Callable[[Callable[[Any], Any], Sequence[Any]], Iterable[Any]]
 
 
 @dataclass(frozen=True)
@@ -75,11 +82,12 @@ def measure_pairs(
     out_csv: str | Path,
     config: BatchConfig | None = None,
     *,
-    workers: int = 1,
+    parallel_map: ParallelMap = map,
     progress: Callable[[int, int], None] | None = None,
 ) -> dict[tuple[str, str], PairScore]:
     """Measure every task not yet in ``out_csv`` (appending), and return all of the tasks' rows,
-    ``(source, target) -> PairScore`` (probability NaN: no classifier is applied here)."""
+    ``(source, target) -> PairScore`` (probability NaN: no classifier is applied here). The tiles are
+    measured through ``parallel_map`` (see the module's docstring)."""
     config = config or BatchConfig()
     out_csv = Path(out_csv)
     out_csv.parent.mkdir(parents=True, exist_ok=True)
@@ -88,7 +96,7 @@ def measure_pairs(
     if progress:
         progress(len(tasks) - len(todo), len(tasks))
     with _Appender(out_csv, list(done.values())) as append:
-        for rows in _run(tiles(todo), config, workers):
+        for rows in _run(tiles(todo), config, parallel_map):
             for score in rows:
                 append(score)
                 # What the CSV holds (histograms to 6 digits): a resumed run then gives the same results.
@@ -129,16 +137,18 @@ def _failed(task: PairTask, config: BatchConfig, reason: str) -> PairScore:
     )  # fmt: skip
 
 
-def _run(batches: list[list[PairTask]], config: BatchConfig, workers: int) -> Iterator[list[PairScore]]:
-    if workers <= 1 or len(batches) <= 1:
-        for tile in batches:
-            yield measure_tile(tile, config)
-        return
-    import multiprocessing
-
-    context = multiprocessing.get_context("spawn")
-    with ProcessPoolExecutor(max_workers=workers, mp_context=context) as pool:
-        yield from pool.map(measure_tile, batches, itertools.repeat(config))
+def _run(
+    batches: list[list[PairTask]], config: BatchConfig, parallel_map: ParallelMap
+) -> Iterator[list[PairScore]]:
+    if len(batches) <= 1:
+        parallel_map = map  # one tile: in this process, as with one worker
+    for tile, rows in zip(batches, parallel_map(partial(measure_tile, config=config), batches), strict=True):
+        if isinstance(rows, BaseException):
+            if not isinstance(rows, WorkerLost):
+                raise rows
+            rows = [_failed(task, config, f"worker lost: {rows}") for task in tile]
+            rows = [_named(score, task) for score, task in zip(rows, tile, strict=True)]
+        yield rows
 
 
 @lru_cache(maxsize=2 * BLOCK_FACES + 4)

@@ -23,7 +23,7 @@ import numpy as np
 
 from coindie.errors import ParameterError
 from coindie.io.truth import FaceTruth, HoardTruth, hoard_recipe
-from coindie.similarity.batch import BatchConfig, PairTask, measure_pairs
+from coindie.similarity.batch import BatchConfig, PairTask, ParallelMap, measure_pairs
 from coindie.similarity.classifier import SameDieClassifier
 from coindie.similarity.score import PairScore
 from coindie.similarity.scorers import Scorer
@@ -156,13 +156,14 @@ def train_similarity(
     max_faces: int | None = 200,
     families: tuple[str, ...] = ("R", "D", "DB"),
     classifier: Scorer | None = None,
-    workers: int = 1,
+    parallel_map: ParallelMap = map,
     seed: int = 0,
     progress: Callable[[int, int], None] | None = None,
 ) -> Scorer:
     """Draw the training pairs of each hoard (``max_pairs`` per hoard), measure them (resuming
     ``work_csv``, one file per hoard after the first: ``NAME-2.csv``, ...), fit and return the classifier.
-    Several hoards train one model: the ``wide`` world draws its physics per hoard."""
+    Several hoards train one model: the ``wide`` world draws its physics per hoard. The pairs are measured
+    through ``parallel_map`` (:func:`coindie.similarity.batch.measure_pairs`; default: in this process)."""
     truths = truth if isinstance(truth, list) else [truth]
     if not truths:
         raise ParameterError("no hoard to train on")
@@ -180,7 +181,9 @@ def train_similarity(
             seed=seed + k,
         )  # fmt: skip
         csv = Path(work_csv) if k == 0 else Path(work_csv).with_name(f"{Path(work_csv).stem}-{k + 1}.csv")
-        measured = measure_pairs([p.task() for p in drawn], csv, config, workers=workers, progress=progress)
+        measured = measure_pairs(
+            [p.task() for p in drawn], csv, config, parallel_map=parallel_map, progress=progress
+        )
         # ids repeat between hoards: key each hoard's pairs by its index too
         scores.update({(f"{k}:{a}", f"{k}:{b}"): v for (a, b), v in measured.items()})
         pairs += [_in_hoard(p, k) for p in drawn]
