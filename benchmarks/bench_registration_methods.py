@@ -1,27 +1,31 @@
 """Time and accuracy of every registered method on synthetic pairs (a quick check, not the benchmark).
 
-    python -m coindie.registration.speed --pairs 10 --radius 10
-    python -m coindie.registration.speed --pairs 40 --hoard HOARD_DIR   # a folder written by `coindie synth`
+    .venv/bin/python benchmarks/bench_registration_methods.py --pairs 10 --radius 10
+    .venv/bin/python benchmarks/bench_registration_methods.py --pairs 40 --hoard HOARD  # from `coindie synth`
 
-Without ``--hoard``, pairs come from :func:`coindie.registration.testing.make_coin_pair` (a 20 mm coin at
-0.1 mm: ~31k target and ~27k source points) under the paper's random poses (x/y within ±25°, z within ±180°).
+Without ``--hoard``, pairs come from the tests' ``synthetic_pairs.make_coin_pair`` (a 20 mm coin at 0.1 mm:
+~31k target and ~27k source points) under the paper's random poses (x/y within ±25°, z within ±180°).
 With ``--hoard``, each pair is two faces of one die (one pair per die, dies drawn at random), grid-sampled at
-0.1 mm, with the truth ``T_scan_die[b] @ inv(T_scan_die[a])`` from the hoard's truth.json. A pair counts as
-recovered when the rotation is within 2° and the translation within 0.3 mm (as in shared/notes/libraries.md).
-Local methods (``icp``) start from the identity, so they only show what a local method does on such poses.
+0.1 mm, with the truth of the hoard (:func:`coindie.io.truth.load_truth`: ``T_true``). A pair counts as
+recovered by the registration benchmark's success thresholds (:mod:`coindie.bench.registration`: rotation
+within 2°, translation within 0.3 mm). Local methods (``icp``) start from the identity, so they only show
+what a local method does on such poses.
 """
 
 from __future__ import annotations
 
 import argparse
-import csv
-import json
+import sys
 import time
 from collections.abc import Iterator
 from pathlib import Path
 
 import numpy as np
 
+from coindie.bench.registration import GRID_MM, SUCCESS_ROTATION_DEG, SUCCESS_TRANSLATION_MM
+from coindie.io import read_scan
+from coindie.io.truth import load_truth
+from coindie.preprocess.sampling import grid_sample
 from coindie.registration import (
     get_method,
     list_methods,
@@ -30,9 +34,10 @@ from coindie.registration import (
     translation_error_mm,
 )
 from coindie.registration.clouds import FloatArray
-from coindie.registration.metrics import inverse
-from coindie.registration.testing import make_coin_pair
 from coindie.scan import Scan
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+from synthetic_pairs import make_coin_pair  # noqa: E402  (a test helper: tests/synthetic_pairs.py)
 
 Pair = tuple[Scan, Scan, FloatArray]
 
@@ -45,24 +50,18 @@ def synthetic_pairs(n_pairs: int, radius: float) -> Iterator[Pair]:
 
 def hoard_pairs(folder: Path, n_pairs: int, seed: int = 0) -> list[Pair]:
     """One random pair of faces for each of ``n_pairs`` random dies of a synthetic hoard."""
-    from coindie.io import read_scan
-    from coindie.preprocess.sampling import grid_sample
-
-    poses = {
-        face: np.array(v["T_scan_die"])
-        for face, v in json.loads((folder / "truth.json").read_text())["faces"].items()
-    }
+    truth = load_truth(folder)
     faces_of: dict[str, list[str]] = {}
-    for row in csv.DictReader((folder / "labels.csv").open()):
-        faces_of.setdefault(row["die_id"], []).append(row["coin_id"])
+    for face in truth.faces.values():  # in the order of labels.csv
+        faces_of.setdefault(face.die, []).append(face.face_id)
     rng = np.random.default_rng(seed)
     dies = [die for die, faces in faces_of.items() if len(faces) >= 2]
     rng.shuffle(dies)
     pairs = []
     for die in dies[:n_pairs]:
         a, b = rng.choice(faces_of[die], 2, replace=False)
-        scans = [grid_sample(read_scan(folder / f"{face}.ply"), 0.1) for face in (a, b)]
-        pairs.append((scans[0], scans[1], poses[b] @ inverse(poses[a])))
+        scans = [grid_sample(read_scan(truth.faces[face].path), GRID_MM) for face in (a, b)]
+        pairs.append((scans[0], scans[1], truth.T_true(a, b)))
     return pairs
 
 
@@ -75,7 +74,10 @@ def evaluate(method: str, pairs: list[Pair]) -> dict[str, float]:
         result = registrar.register(source, target)
         seconds.append(time.perf_counter() - start)
         T = result.T_target_source
-        recovered.append(rotation_error_deg(truth, T) < 2.0 and translation_error_mm(truth, T) < 0.3)
+        recovered.append(
+            rotation_error_deg(truth, T) < SUCCESS_ROTATION_DEG
+            and translation_error_mm(truth, T) < SUCCESS_TRANSLATION_MM
+        )
         valid.append(result.valid)
         sre.append(1000 * scaled_registration_error(source.points, truth, T))
     ok, accepted = np.array(recovered), np.array(valid)
