@@ -11,12 +11,12 @@
   ``histogram_scaler.json`` is over the real training pairs of the logistic regression.
 - Renders: faces of one die side by side, and faces of two dies of one type, all in the die's frame.
 
-Run: ``python -m coindie.synth.calibration HOARD_DIR --real ../shared/data/riedones3d --images docs/images``.
+Run (from the repository): ``python benchmarks/synth_calibration.py HOARD_DIR --real
+../shared/data/riedones3d --images docs/images``.
 """
 
 from __future__ import annotations
 
-import argparse
 import json
 import re
 from collections import Counter
@@ -385,30 +385,3 @@ def parameter_tables() -> str:
             )
         lines.append("")
     return "\n".join(lines)
-
-
-def main(argv: list[str] | None = None) -> None:
-    parser = argparse.ArgumentParser(
-        prog="python -m coindie.synth.calibration", description=__doc__.split("\n")[0]
-    )
-    parser.add_argument("hoard", type=Path, help="a folder made by `coindie synth`")
-    parser.add_argument("--real", type=Path, default=Path("../shared/data/riedones3d"), help="the real facts")
-    parser.add_argument("--images", type=Path, default=Path("docs/images"), help="where the PNGs go")
-    parser.add_argument("--pairs", type=int, default=120, help="same-die pairs in the mean histogram")
-    parser.add_argument("--seed", type=int, default=0)
-    parser.add_argument("--parameters", action="store_true", help="print the parameter tables and stop")
-    args = parser.parse_args(argv)
-    if args.parameters:
-        print(parameter_tables())
-        return
-    result = calibrate(args.hoard, args.real, args.images, args.pairs, args.seed)
-    summary = {k: v for k, v in result["histogram"].items() if not k.endswith("_mean")}
-    print(
-        json.dumps(
-            {"die_sizes": result["die_sizes"], "links": result["links"], "histogram": summary}, indent=1
-        )
-    )
-
-
-if __name__ == "__main__":
-    main()
