@@ -31,6 +31,7 @@ def random_rotation(seed: int) -> np.ndarray:
     return Rotation.random(random_state=seed).as_matrix()
 
 
+@pytest.mark.numeric  # local frames from covariances (eigh)
 def test_a_rotated_patch_has_a_rotated_frame_and_the_same_local_coordinates() -> None:
     points, centres = bumpy_patches(np.random.default_rng(0))
     normals = np.tile([0.0, 0.0, 1.0], (len(points), 1))
@@ -44,6 +45,7 @@ def test_a_rotated_patch_has_a_rotated_frame_and_the_same_local_coordinates() ->
     )
 
 
+@pytest.mark.numeric  # local frames from covariances (eigh)
 def test_frames_are_right_handed_rotations_with_z_along_the_given_normal() -> None:
     points, centres = bumpy_patches(np.random.default_rng(2))
     for normal in ([0.0, 0.0, 1.0], [0.0, 0.0, -1.0]):

@@ -8,6 +8,10 @@ import pytest
 from coindie.errors import ParameterError
 from coindie.preprocess import estimate_normals
 
+# Linear algebra under test (normals from local covariances (eigh)):
+# make test reruns this module under other OpenBLAS kernels.
+pytestmark = pytest.mark.numeric
+
 
 def _angles_deg(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     cos = (a * b).sum(axis=1) / (np.linalg.norm(a, axis=1) * np.linalg.norm(b, axis=1))

@@ -10,6 +10,10 @@ from coindie.preprocess import orient_to_z, up_axis
 from coindie.preprocess.frames import angle_between_deg, apply, rigid, rotation_angle_deg, rotation_between
 from test_preprocess_synthetic import SyntheticCoin, make_scan, random_pose
 
+# Linear algebra under test (PCA axes (eigh) and rotations between directions):
+# make test reruns this module under other OpenBLAS kernels.
+pytestmark = pytest.mark.numeric
+
 Z = np.array([0.0, 0.0, 1.0])
 COIN = SyntheticCoin(spacing=0.2)
 

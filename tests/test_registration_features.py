@@ -27,6 +27,10 @@ from coindie.registration.clouds import Cloud, IntArray, transform_points
 from coindie.registration.features import nearest_rows
 from synthetic_pairs import make_coin_pair, rigid_transform
 
+# Linear algebra under test (FPFH under rigid motions, nearest rows by matrix products):
+# make test reruns this module under other OpenBLAS kernels.
+pytestmark = pytest.mark.numeric
+
 
 @pytest.fixture(scope="module")
 def pair():

@@ -21,6 +21,10 @@ from coindie.registration.patch_icp import _patch
 from coindie.registration.quality import alignment, robust_score
 from synthetic_pairs import CoinPair, make_coin_pair, rigid_transform
 
+# Linear algebra under test (ICP (Kabsch SVD per iteration) and the error metrics):
+# make test reruns this module under other OpenBLAS kernels.
+pytestmark = pytest.mark.numeric
+
 
 @pytest.fixture(scope="module")
 def level_pair() -> CoinPair:

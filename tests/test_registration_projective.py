@@ -3,10 +3,15 @@
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from coindie.registration.clouds import Cloud
 from coindie.registration.projective import ProjectedCloud
 from synthetic_pairs import rigid_transform
+
+# Linear algebra under test (projective look-ups after rigid transforms):
+# make test reruns this module under other OpenBLAS kernels.
+pytestmark = pytest.mark.numeric
 
 
 def _tilted_relief(seed: int) -> tuple[Cloud, np.ndarray]:

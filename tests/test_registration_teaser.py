@@ -13,6 +13,10 @@ from coindie.registration.metrics import inverse
 from coindie.registration.teaser import adaptive_voting, gnc_tls_rotation
 from synthetic_pairs import random_pose
 
+# Linear algebra under test (TEASER's rotation (GNC-TLS, SVD) and translation):
+# make test reruns this module under other OpenBLAS kernels.
+pytestmark = pytest.mark.numeric
+
 
 def outlier_matches(
     n: int, inlier_share: float, seed: int, noise: float = 0.01

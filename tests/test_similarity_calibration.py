@@ -12,6 +12,10 @@ from coindie.similarity.calibration import (
     log_odds,
 )
 
+# Linear algebra under test (the mixture fit and the logistic calibration):
+# make test reruns this module under other OpenBLAS kernels.
+pytestmark = pytest.mark.numeric
+
 
 def _mixture(share: float, n: int, seed: int, same=(5.0, 2.5), different=(-7.0, 1.5)) -> tuple:
     rng = np.random.default_rng(seed)

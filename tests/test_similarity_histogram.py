@@ -10,6 +10,10 @@ from coindie.scan import Scan
 from coindie.similarity import HistogramSettings, c2c_distances, c2c_histogram, main_normal
 from coindie.similarity.histogram import clear_cache, sampled_face
 
+# Linear algebra under test (transformed points, distances and bin edges):
+# make test reruns this module under other OpenBLAS kernels.
+pytestmark = pytest.mark.numeric
+
 SHIFT = np.array([5.0, -3.0, 1.0])
 
 
@@ -41,8 +45,9 @@ def test_histogram_matches_a_hand_computed_case() -> None:
     clear_cache()
     settings = HistogramSettings()
     width = 0.6 / 70
-    # bins: 0.004 -> 0; 0.013, 0.016 -> 1; 0.3 -> 35; 0.7 and 0.65 are dropped (over 0.6 mm).
-    source = _source([0.004, 0.013, 0.016, 0.3, 0.7, 0.65], steep=3)
+    # bins: 0.004 -> 0; 0.013, 0.016 -> 1; 0.304 -> 35; 0.7 and 0.65 are dropped (over 0.6 mm). Every
+    # distance lies well inside its bin (0.3 would sit on the edge of bins 34 and 35: the last bit decides).
+    source = _source([0.004, 0.013, 0.016, 0.304, 0.7, 0.65], steep=3)
     histogram = c2c_histogram(source, _plane(), _T_target_source(), settings)
     expected = np.zeros(70)
     expected[[0, 1, 35]] = [1, 2, 1]
