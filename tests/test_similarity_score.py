@@ -145,3 +145,29 @@ def test_train_similarity_command_writes_a_loadable_model(hoard: Path, tmp_path:
     assert SameDieClassifier.load(out).NAME == "paper"
     bad = CliRunner().invoke(app, [*args[:5], "--method", "nope"])
     assert bad.exit_code == 2 and "unknown method" in bad.output
+
+
+def test_a_tile_whose_worker_was_lost_is_recorded_as_failed_and_the_batch_goes_on(tmp_path: Path) -> None:
+    from coindie.errors import WorkerLost
+
+    # 15 faces: two tiles (one tile would be measured in this process, without the backend)
+    tasks = [PairTask(f"L{k:04d}D", "L0099D", str(tmp_path / f"L{k:04d}D.ply"), "") for k in range(14)]
+
+    def lost_workers(function, tiles):  # a backend's map_ordered whose every worker died for good
+        return [WorkerLost("its worker process died 3 times") for _ in tiles]
+
+    out = tmp_path / "pairs.csv"
+    scores = measure_pairs(tasks, out, BatchConfig(), parallel_map=lost_workers)
+    assert len(scores) == len(tasks) and not any(s.valid for s in scores.values())
+    assert all(s.reason == "worker lost: its worker process died 3 times" for s in scores.values())
+    assert set(read_scores(out)) == {(t.source, t.target) for t in tasks}
+
+
+def test_a_tile_that_raises_stops_the_batch(tmp_path: Path) -> None:
+    tasks = [PairTask(f"L{k:04d}D", "L0099D", "", "") for k in range(14)]  # two tiles
+
+    def broken(function, tiles):
+        return [RuntimeError("a bug, not a bad scan") for _ in tiles]
+
+    with pytest.raises(RuntimeError, match="a bug"):
+        measure_pairs(tasks, tmp_path / "pairs.csv", BatchConfig(), parallel_map=broken)

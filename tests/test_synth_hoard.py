@@ -221,6 +221,17 @@ def test_hoard_is_identical_whatever_the_number_of_workers(tiny_hoards):
     assert settings[0] == settings[1]
 
 
+@pytest.mark.slow
+def test_hoard_made_on_a_dask_cluster_is_the_same(tiny_hoards, tmp_path):
+    from coindie.synth.hoard import synthesize
+
+    one = tiny_hoards[1]
+    synthesize(tmp_path, preset="tiny", seed=7, physics=_coarse_physics(), workers=2, dask="local")
+    names = sorted(p.name for p in one.iterdir() if p.name != HOARD_FILE)
+    _, mismatch, errors = filecmp.cmpfiles(one, tmp_path, names, shallow=False)
+    assert mismatch == [] and errors == []
+
+
 def test_outputs_are_readable_and_agree_with_the_plan(tiny_hoards):
     out = tiny_hoards[1]
     plan = plan_hoard(get_preset("tiny"), seed=7)
