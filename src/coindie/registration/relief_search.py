@@ -147,28 +147,8 @@ def masked_ncc(
         fixed = FixedSpectra.of(fixed, fixed_mask, moving.shape)
     if fixed.moving_shape != moving.shape:
         raise ValueError(f"moving image {moving.shape} does not match the spectra's {fixed.moving_shape}")
-    shape = fixed.shape
-    out = (fixed.fixed_shape[0] + moving.shape[0] - 1, fixed.fixed_shape[1] + moving.shape[1] - 1)
-    mm = moving_mask[::-1, ::-1].astype(np.float32)
-    m = moving[::-1, ::-1].astype(np.float32) * mm
-
-    def forward(a: FloatImage) -> NDArray[np.complex128]:
-        return fft.rfft2(a, shape)
-
-    def backward(a: NDArray[np.complex128]) -> FloatImage:
-        return fft.irfft2(a, shape)[: out[0], : out[1]]
-
-    F_m, F_mm = forward(m), forward(mm)
-    overlap = np.maximum(np.rint(backward(fixed.F_fm * F_mm)), 1.0)
-    sum_f, sum_m = backward(fixed.F_f * F_mm), backward(fixed.F_fm * F_m)
-    numerator = backward(fixed.F_f * F_m) - sum_f * sum_m / overlap
-    var_f = backward(fixed.F_ff * F_mm) - sum_f**2 / overlap
-    var_m = backward(fixed.F_fm * forward(m * m)) - sum_m**2 / overlap
-    denominator = np.sqrt(np.maximum(var_f * var_m, 0.0))
-    valid = denominator > 1e-9 * max(float(denominator.max()), 1e-300)
-    ncc = np.where(valid, numerator / np.where(valid, denominator, 1.0), 0.0)
-    ncc[overlap < min_overlap] = 0.0
-    return np.clip(ncc, -1.0, 1.0), overlap
+    ncc, overlap = _masked_ncc_batch(fixed, moving[None], moving_mask[None], min_overlap)
+    return ncc[0], overlap[0]
 
 
 def rotate_image(
@@ -377,7 +357,7 @@ def correlate_turns(
         chunk = angles[first : first + batch]
         moving = np.stack([rotate_image(detail, a, centre=centre) for a in chunk])
         moving_mask = np.stack([rotate_image(mask.astype(np.float64), a, centre=centre) > 0.5 for a in chunk])
-        ncc = _masked_ncc_batch(fixed, moving, moving_mask, min_pixels)
+        ncc, _ = _masked_ncc_batch(fixed, moving, moving_mask, min_pixels)
         for i in range(len(chunk)):
             scores[first + i] = float(ncc[i].max())
             shifts[first + i] = (_peak_shift(ncc[i], moving.shape[1:]) - origin) * source.pixel_mm * step
@@ -396,8 +376,9 @@ def _cropped_spectra(image: ReliefImage, step: int, moving_shape: tuple[int, ...
 
 def _masked_ncc_batch(
     fixed: FixedSpectra, moving: FloatImage, moving_mask: BoolImage, min_overlap: float
-) -> FloatImage:
-    """:func:`masked_ncc` for a stack of moving images (axis 0) against one fixed image."""
+) -> tuple[FloatImage, FloatImage]:
+    """:func:`masked_ncc` for a stack of moving images (axis 0) against one fixed image, the FFTs of the
+    whole stack taken in one call each."""
     shape = fixed.shape
     out = (fixed.fixed_shape[0] + moving.shape[1] - 1, fixed.fixed_shape[1] + moving.shape[2] - 1)
     mm = moving_mask[:, ::-1, ::-1].astype(np.float32)
@@ -420,7 +401,7 @@ def _masked_ncc_batch(
     valid = denominator > 1e-9 * np.maximum(top, 1e-300)
     ncc = np.where(valid, numerator / np.where(valid, denominator, 1.0), 0.0)
     ncc[overlap < min_overlap] = 0.0
-    return np.clip(ncc, -1.0, 1.0)
+    return np.clip(ncc, -1.0, 1.0), overlap
 
 
 def _refine_shift(
