@@ -12,8 +12,8 @@ The workers are the caller's: ``parallel_map`` maps :func:`measure_tile` over th
 results back in order, as ``map`` does (the default: in this process). This layer sits below
 :mod:`coindie.project`, so it does not build the pool itself; callers pass a backend's
 ``map_ordered`` (:mod:`coindie.project.backends`: local processes or Dask, a tile whose worker died run
-again). A result that is an exception is a tile whose worker was lost for good: its pairs are recorded as
-failed (``reason`` says so) and the batch goes on.
+again). A :class:`~coindie.errors.WorkerLost` in place of a tile's rows (its worker died every time) makes
+its pairs failed rows (``reason`` says so) and the batch goes on; any other exception is raised.
 """
 
 from __future__ import annotations
