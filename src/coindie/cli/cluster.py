@@ -8,11 +8,14 @@ from typing import Annotated
 
 import typer
 
-from coindie.cli.app import app, exits_cleanly
+from coindie.cli.common import exits_cleanly
 from coindie.errors import ParameterError
 
+#: The commands of this module; coindie.cli.app registers them.
+commands = typer.Typer()
 
-@app.command("cluster")
+
+@commands.command("cluster")
 @exits_cleanly
 def cluster_command(
     source: Annotated[
@@ -100,7 +103,7 @@ def _corrections(source: Path, graph):  # noqa: ANN001, ANN202
         log.close()
 
 
-@app.command("eval")
+@commands.command("eval")
 @exits_cleanly
 def eval_command(
     clusters: Annotated[Path, typer.Argument(help="Cluster CSV (name, die) to judge.")],

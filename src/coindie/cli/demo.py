@@ -14,14 +14,17 @@ from typing import Annotated
 
 import typer
 
-from coindie.cli.app import app, exits_cleanly
+from coindie.cli.common import exits_cleanly
 from coindie.errors import ParameterError
+
+#: The commands of this module; coindie.cli.app registers them.
+commands = typer.Typer()
 
 #: Candidates per face in the demo (a small hoard: recall is ~99 % of faces at K = 10, BENCHMARK.md).
 DEMO_K = 10
 
 
-@app.command()
+@commands.command()
 @exits_cleanly
 def demo(
     out: Annotated[Path, typer.Argument(help="Folder for the hoard, the project and the clusters (reused).")],

@@ -190,7 +190,7 @@ class Project:
         """List ``scans_dir`` (files are not read here) and record new or changed faces. A face whose file
         changed (size or modification time) is prepared again and loses its pairs."""
         from coindie.io import open_dataset
-        from coindie.io.reader import face_id_of
+        from coindie.ids import face_id_of
 
         scans_dir = Path(scans_dir).resolve()
         dataset = open_dataset(scans_dir)
