@@ -6,10 +6,10 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 from functools import wraps
-from typing import ParamSpec, TypeVar
+from typing import ParamSpec, TypeVar, get_type_hints
 
-import click
 import typer
+from typer.models import ArgumentInfo, ParameterInfo
 
 from coindie.errors import CoinDieError
 
@@ -31,7 +31,7 @@ def exits_cleanly(command: Callable[P, R]) -> Callable[P, R]:
         try:
             return command(*args, **kwargs)
         except CoinDieError as error:
-            typer.echo(f"coindie: error: {with_flags(str(error), _command_flags())}", err=True)
+            typer.echo(f"coindie: error: {with_flags(str(error), command_flags(command))}", err=True)
             raise typer.Exit(code=2) from None
 
     return wrapper
@@ -53,13 +53,18 @@ def with_flags(message: str, flags: dict[str, str]) -> str:
     return _NAMED_PARAMETER.sub(named, message)
 
 
-def _command_flags() -> dict[str, str]:
-    """The running command's options: Python name -> its first long flag (empty outside a command)."""
-    context = click.get_current_context(silent=True)
-    if context is None:
+def command_flags(command: Callable[..., object]) -> dict[str, str]:
+    """A command function's options: Python name -> its long flag (``--max-faces``, or the one declared)."""
+    try:
+        hints = get_type_hints(command, include_extras=True)
+    except NameError:  # an annotation named only for type checkers: no flags, the message stays
         return {}
-    return {
-        param.name: next((opt for opt in param.opts if opt.startswith("--")), param.opts[0])
-        for param in context.command.params
-        if isinstance(param, click.Option) and param.name is not None
-    }
+    flags = {}
+    for name, hint in hints.items():
+        declared = next((m for m in getattr(hint, "__metadata__", ()) if isinstance(m, ParameterInfo)), None)
+        if isinstance(declared, ArgumentInfo):
+            continue
+        decls = getattr(declared, "param_decls", None) or ()
+        flags[name] = next((d for d in decls if d.startswith("--")), "--" + name.replace("_", "-"))
+    flags.pop("return", None)
+    return flags

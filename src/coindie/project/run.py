@@ -79,11 +79,11 @@ class RunConfig:
         if self.mode not in MODES:
             raise ProjectError(f"unknown run mode {self.mode!r}; known: {', '.join(MODES)}")
         if self.k < 1:
-            raise ProjectError(f"--candidates K needs K >= 1, got {self.k}")
+            raise ProjectError(f"The 'k' parameter of RunConfig must be >= 1. Got {self.k}.")
         if self.batch_faces < 1:
             raise ProjectError(f"batch_faces must be >= 1, got {self.batch_faces}")
         if self.workers < 0:
-            raise ProjectError(f"--workers must be >= 0 (0: one per core), got {self.workers}")
+            raise ProjectError(f"The 'workers' parameter of RunConfig must be >= 0 (0: one per core). Got {self.workers}.")
         from coindie.similarity.scorers import SCORERS
 
         if self.scorer not in SCORERS:
@@ -389,7 +389,7 @@ def _plan_line(plan: SidePlan, config: RunConfig) -> str:
         if config.mode == "auto":
             text += (
                 f" (auto: exhaustive only up to {AUTO_EXHAUSTIVE_MAX_FACES} faces per side; "
-                "--exhaustive forces it)"
+                "mode 'exhaustive' forces it)"
             )
     return text + f"; {plan.n_new:,} newly planned"
 

@@ -106,7 +106,7 @@ class TrainOptions:
                 "Training options need 0 <= momentum < 1, 0 < lr_decay <= 1, 0 <= val_fraction < 1."
             )
         if self.device == "cuda" and not torch.cuda.is_available():
-            raise ParameterError("--device cuda: this PyTorch build sees no CUDA device.")
+            raise ParameterError("The 'device' parameter is 'cuda': this PyTorch build sees no CUDA device.")
         if self.device not in ("cpu", "cuda"):
             raise ParameterError(f"The device must be 'cpu' or 'cuda'. Got {self.device!r}.")
 
