@@ -38,7 +38,7 @@ LAYERS: tuple[str | tuple[str, ...], ...] = (
     "cli",
 )
 # Modules directly under coindie/ that everything may use: they import nothing of coindie but each other.
-BASE_MODULES = frozenset({"__init__", "errors", "ids", "scan", "arrays", "transforms", "params"})
+BASE_MODULES = frozenset({"__init__", "errors", "ids", "scan", "arrays", "transforms", "params", "caches"})
 
 
 @dataclass(frozen=True)

@@ -16,9 +16,9 @@ from coindie.preprocess import (
     preprocess,
     summarize_scan,
 )
-from coindie.preprocess.frames import angle_between_deg, apply
 from coindie.preprocess.summary import face_diameter, point_spacing
 from coindie.scan import Scan
+from coindie.transforms import angle_between_deg, apply
 from test_preprocess_synthetic import SyntheticCoin, make_scan, random_pose
 
 DENSE = SyntheticCoin(spacing=0.05)

@@ -29,10 +29,9 @@ import numpy as np
 from numpy.typing import NDArray
 from scipy import fft, ndimage
 
+from coindie.arrays import FloatArray
 from coindie.errors import ParameterError
 from coindie.scan import Scan
-
-FloatArray = NDArray[np.float64]
 
 #: Bumped whenever the descriptor's computation changes, so that cached descriptors are recomputed.
 DESCRIPTOR_VERSION = 1

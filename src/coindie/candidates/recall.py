@@ -19,7 +19,8 @@ import numpy as np
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 
-from coindie.candidates.index import IntArray, candidate_pairs
+from coindie.arrays import IntArray
+from coindie.candidates.index import candidate_pairs
 
 
 @dataclass(frozen=True)

@@ -23,11 +23,10 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import NDArray
 
+from coindie.arrays import IntArray
 from coindie.clustering.graph import ProbabilityGraph
 from coindie.errors import ParameterError
 from coindie.ids import parse_face_id
-
-IntArray = NDArray[np.int64]
 
 METHODS = ("components", "average", "leiden")
 #: The threshold the paper found best on its validation split (obverses without beard).

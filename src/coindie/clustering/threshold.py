@@ -19,12 +19,11 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
+from coindie.arrays import FloatArray
 from coindie.clustering.algorithms import cluster
 from coindie.clustering.evaluation import evaluate
 from coindie.clustering.graph import ProbabilityGraph
 from coindie.errors import ParameterError
-
-FloatArray = NDArray[np.float64]
 
 
 def threshold_grid() -> FloatArray:

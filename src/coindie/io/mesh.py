@@ -18,14 +18,13 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import NDArray
 
+from coindie.arrays import FloatArray
 from coindie.errors import InvalidScanError, ScanReadError
 from coindie.ids import FaceId, face_id_of
 from coindie.scan import Scan
 
 if TYPE_CHECKING:
     import trimesh
-
-FloatArray = NDArray[np.float64]
 
 
 def read_mesh(path: str | Path, face_id: FaceId | None = None) -> Scan:

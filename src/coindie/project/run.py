@@ -83,7 +83,9 @@ class RunConfig:
         if self.batch_faces < 1:
             raise ProjectError(f"batch_faces must be >= 1, got {self.batch_faces}")
         if self.workers < 0:
-            raise ProjectError(f"The 'workers' parameter of RunConfig must be >= 0 (0: one per core). Got {self.workers}.")
+            raise ProjectError(
+                f"The 'workers' parameter of RunConfig must be >= 0 (0: one per core). Got {self.workers}."
+            )
         from coindie.similarity.scorers import SCORERS
 
         if self.scorer not in SCORERS:

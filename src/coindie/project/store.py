@@ -189,8 +189,8 @@ class Project:
     def add_scans(self, scans_dir: str | Path) -> AddReport:
         """List ``scans_dir`` (files are not read here) and record new or changed faces. A face whose file
         changed (size or modification time) is prepared again and loses its pairs."""
-        from coindie.io import open_dataset
         from coindie.ids import face_id_of
+        from coindie.io import open_dataset
 
         scans_dir = Path(scans_dir).resolve()
         dataset = open_dataset(scans_dir)

@@ -13,8 +13,9 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from coindie.arrays import IntArray
 from coindie.registration.base import Estimate, Matches
-from coindie.registration.clouds import Cloud, IntArray, content_rng
+from coindie.registration.clouds import Cloud, content_rng
 from coindie.registration.icp import MIN_CORRESPONDENCES, point_to_plane_icp
 from coindie.registration.params import Configurable, param
 

@@ -16,8 +16,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from coindie.registration.clouds import Cloud, FloatArray, transform_points
+from coindie.arrays import FloatArray
+from coindie.registration.clouds import Cloud
 from coindie.registration.params import Configurable, param
+from coindie.transforms import transform_points
 
 
 @dataclass(frozen=True)

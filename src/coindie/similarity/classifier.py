@@ -22,13 +22,12 @@ from pathlib import Path
 from typing import Any, ClassVar
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import ArrayLike
 
+from coindie.arrays import FloatArray
 from coindie.errors import CoinDieError, ParameterError
 from coindie.similarity.histogram import HistogramSettings
 from coindie.similarity.logistic import fit_platt_logistic, sigmoid
-
-FloatArray = NDArray[np.float64]
 
 #: Version of the JSON format written by :meth:`SameDieClassifier.save`.
 FORMAT_VERSION = 1

@@ -21,14 +21,12 @@ from functools import cached_property
 from typing import Any
 
 import numpy as np
-from numpy.typing import NDArray
 from scipy.spatial import cKDTree
 
+from coindie.arrays import FloatArray
 from coindie.caches import LRUCache
 from coindie.errors import ParameterError
 from coindie.scan import Scan
-
-FloatArray = NDArray[np.float64]
 
 #: Faces kept ready by default (sampled points and k-d tree): a 0.05 mm face of 150k points takes ~10 MB.
 FACE_CACHE_SIZE = 16

@@ -19,15 +19,14 @@ from pathlib import Path
 from typing import Any, ClassVar
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import ArrayLike
 
+from coindie.arrays import FloatArray
 from coindie.errors import ParameterError
 from coindie.similarity.classifier import ClassifierError, checked_rows, write_model
 from coindie.similarity.histogram import HistogramSettings
 from coindie.similarity.logistic import fit_platt_logistic, sigmoid
 from coindie.similarity.relief_features import FEATURE_NAMES, ReliefFeatureSettings
-
-FloatArray = NDArray[np.float64]
 
 FORMAT = "coindie.relief_classifier"
 FORMAT_VERSION = 1

@@ -34,16 +34,13 @@ from threading import Lock
 from typing import Any
 
 import numpy as np
-from numpy.typing import NDArray
 from scipy import ndimage
 
+from coindie.arrays import BoolArray, FloatArray
 from coindie.errors import ParameterError
 from coindie.preprocess.canonical import CanonicalFrame, canonical_frame
 from coindie.preprocess.heightmap import HeightMap, height_map
 from coindie.scan import Scan
-
-FloatArray = NDArray[np.float64]
-BoolArray = NDArray[np.bool_]
 
 #: The features, in the order of :func:`relief_features`' vector.
 FEATURE_NAMES = ("ncc_fine", "ncc_coarse", "local_median", "local_p90", "overlap")

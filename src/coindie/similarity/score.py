@@ -14,15 +14,13 @@ from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
-from numpy.typing import NDArray
 
+from coindie.arrays import FloatArray
 from coindie.registration.base import Registrar
 from coindie.scan import Scan
 from coindie.similarity.histogram import FaceCache, HistogramSettings, c2c_histogram
 from coindie.similarity.relief_features import FEATURE_NAMES, ReliefFeatureSettings, relief_features
 from coindie.similarity.scorers import Scorer, default_scorer
-
-FloatArray = NDArray[np.float64]
 
 
 @dataclass(frozen=True)

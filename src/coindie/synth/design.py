@@ -23,11 +23,12 @@ from enum import StrEnum
 import numpy as np
 from scipy import ndimage
 
+from coindie.arrays import FloatArray
 from coindie.errors import ParameterError
 from coindie.synth import _motifs
 from coindie.synth._params import check_ranges, param
 from coindie.synth._primitives import Primitive, Stroke, n_control, pellet, rasterise_relief
-from coindie.synth._raster import FloatArray, Grid, Placement, resample
+from coindie.synth._raster import Grid, Placement, resample
 from coindie.synth.life import DEFAULT_LIFE, Crack, LifeParams, draw_cracks
 
 #: Radius (mm) at which ``DieParams.sagitta_mm`` is measured.

@@ -15,6 +15,7 @@ from typing import Any
 
 import numpy as np
 
+from coindie.arrays import FloatArray
 from coindie.errors import ParameterError
 from coindie.scan import Scan, normal_colors
 from coindie.synth.circulation import CirculationParams, CirculationSpec, circulate, sample_circulation
@@ -32,7 +33,6 @@ from coindie.synth.scanner import (
 from coindie.synth.strike import StrikeParams, StrikeSpec, bend_points, coin_grid, sample_strike, strike
 from coindie.synth.writer import to_jsonable
 
-FloatArray = np.ndarray
 _DEFAULT_STRIKE, _DEFAULT_CIRCULATION, _DEFAULT_SCAN = StrikeParams(), CirculationParams(), ScanParams()
 #: Coarsest pixel of a coin's height field (mm).
 MAX_SURFACE_PITCH_MM = 0.05

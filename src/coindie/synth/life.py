@@ -19,9 +19,10 @@ from typing import TYPE_CHECKING
 import numpy as np
 from scipy import ndimage
 
+from coindie.arrays import FloatArray
 from coindie.synth import _raster
 from coindie.synth._params import check_ranges, param
-from coindie.synth._raster import FloatArray, Grid, Placement
+from coindie.synth._raster import Grid, Placement
 
 if TYPE_CHECKING:
     from coindie.synth.design import Die

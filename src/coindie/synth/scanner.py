@@ -25,8 +25,8 @@ from scipy import ndimage, sparse
 from scipy.spatial import cKDTree
 from scipy.spatial.transform import Rotation
 
+from coindie.arrays import FloatArray
 from coindie.synth._params import check_ranges, new_field, param
-from coindie.synth._raster import FloatArray
 from coindie.synth.strike import StrikeSpec, Surface, max_radius, outline_radius
 
 #: Face vertices closer than this share of the spacing to the outline are left to the wall.

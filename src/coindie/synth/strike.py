@@ -21,9 +21,10 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from coindie.arrays import FloatArray
 from coindie.synth import _raster
 from coindie.synth._params import check_ranges, param
-from coindie.synth._raster import FloatArray, Grid, Placement
+from coindie.synth._raster import Grid, Placement
 from coindie.synth.life import relief_at
 
 if TYPE_CHECKING:

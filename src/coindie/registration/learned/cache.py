@@ -10,7 +10,7 @@ from __future__ import annotations
 from collections import OrderedDict
 from collections.abc import Callable, Hashable
 
-from coindie.registration.clouds import FloatArray
+from coindie.arrays import FloatArray
 
 #: Every descriptor cache of the process (a handful, one per descriptor module).
 _CACHES: list[DescriptorCache] = []

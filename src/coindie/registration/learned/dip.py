@@ -20,8 +20,9 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from coindie.arrays import FloatArray, IntArray
 from coindie.errors import CoinDieError
-from coindie.registration.clouds import Cloud, FloatArray, IntArray, content_key
+from coindie.registration.clouds import Cloud, content_key
 from coindie.registration.features import grid_support
 from coindie.registration.learned.cache import DescriptorCache
 from coindie.registration.learned.lrf import canonical_patches

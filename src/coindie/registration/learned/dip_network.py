@@ -17,7 +17,7 @@ import torch
 from torch import nn
 from torch.nn import functional
 
-from coindie.registration.clouds import FloatArray
+from coindie.arrays import FloatArray
 
 if TYPE_CHECKING:
     from coindie.registration.learned.dip import DIPConfig

@@ -33,10 +33,12 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from coindie.arrays import FloatArray, IntArray
 from coindie.errors import CoinDieError, ParameterError
-from coindie.registration.clouds import Cloud, FloatArray, IntArray, content_key, transform_points
+from coindie.registration.clouds import Cloud, content_key
 from coindie.registration.learned.cache import DescriptorCache
 from coindie.registration.params import Configurable, param
+from coindie.transforms import transform_points
 
 if TYPE_CHECKING:
     import torch
@@ -106,8 +108,8 @@ def levelling(points: FloatArray, normals: FloatArray) -> FloatArray:
     fitted plane (:func:`coindie.preprocess.canonical.canonical_frame`) to z, face up. The smallest one
     keeps the face's own turn about its axis (no canonical spin is imposed)."""
     from coindie.preprocess.canonical import canonical_frame
-    from coindie.preprocess.frames import rigid, rotation_between
     from coindie.scan import Scan
+    from coindie.transforms import rigid, rotation_between
 
     frame = canonical_frame(Scan(points=points, normals=normals))
     up = frame.T_canonical_scan[:3, :3].T @ np.array([0.0, 0.0, 1.0])
@@ -118,7 +120,7 @@ def levelling(points: FloatArray, normals: FloatArray) -> FloatArray:
 
 def spin(angle_deg: float, centre: FloatArray) -> FloatArray:
     """The 4x4 turn by ``angle_deg`` about the z axis through ``centre``."""
-    from coindie.preprocess.frames import rigid
+    from coindie.transforms import rigid
 
     c, s = np.cos(np.radians(angle_deg)), np.sin(np.radians(angle_deg))
     R = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])

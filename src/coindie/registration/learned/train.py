@@ -35,7 +35,6 @@ import torch
 
 from coindie.errors import ParameterError
 from coindie.io.truth import hoard_recipe
-from coindie.registration.clouds import transform_points
 from coindie.registration.features import MutualNN
 from coindie.registration.learned.dip import DIPConfig
 from coindie.registration.learned.fcgf import FCGFConfig, config_path, count_parameters, torch_threads
@@ -51,6 +50,7 @@ from coindie.registration.learned.pairs import (
     level_pair,
     split_pairs,
 )
+from coindie.transforms import transform_points
 
 CHECKPOINT = "checkpoint.safetensors"
 MODEL = "fcgf.safetensors"
