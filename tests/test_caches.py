@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import pickle
 
 import pytest
 
@@ -27,6 +28,14 @@ def test_lru_cache_keeps_the_most_recently_used() -> None:
     assert computed == ["a", "b", "c", "b"] and len(cache) == 2
     with pytest.raises(ParameterError, match="'size'"):
         LRUCache(0)
+
+
+def test_a_pipeline_and_its_cache_pickle() -> None:
+    cache: LRUCache[str, int] = LRUCache(3)
+    cache.get("a", lambda: 1)
+    copy = pickle.loads(pickle.dumps(cache))
+    assert copy.size == 3 and copy.get("a", lambda: 2) == 1
+    assert pickle.loads(pickle.dumps(get_method("icp", cloud_cache_size=5)))._clouds.size == 5
 
 
 def test_get_method_builds_its_cloud_cache_of_the_size_asked() -> None:

@@ -47,3 +47,11 @@ class LRUCache(Generic[K, V]):
 
     def __len__(self) -> int:
         return len(self._items)
+
+    # A cache travels with what holds it (a pipeline sent to a worker process): its values, a new lock.
+    def __getstate__(self) -> dict[str, object]:
+        return {"size": self.size, "_items": self._items}
+
+    def __setstate__(self, state: dict[str, object]) -> None:
+        self.__dict__.update(state)
+        self._lock = Lock()
