@@ -16,7 +16,7 @@ from coindie.registration import (
     method_info,
     register_method,
 )
-from coindie.registration.params import Param
+from coindie.params import Param
 
 
 def test_the_message_names_the_parameter_the_part_the_range_and_the_value() -> None:

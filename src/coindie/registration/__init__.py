@@ -24,7 +24,7 @@ from coindie.registration.compose import Refined
 from coindie.registration.features import FPFH, FeatureExtractor, FeatureRegistration, MutualNN
 from coindie.registration.icp import PointToPlaneICP, point_to_plane_icp
 from coindie.registration.metrics import rotation_error_deg, scaled_registration_error, translation_error_mm
-from coindie.registration.params import Configurable, Param, param
+from coindie.params import Configurable, Param, param
 from coindie.registration.patch_icp import PatchICP
 from coindie.registration.quality import Acceptance
 from coindie.registration.random_search import RandomSearch

@@ -15,7 +15,7 @@ import numpy as np
 
 from coindie.registration.base import CorrespondenceSolver, Estimate, Matches, Timer
 from coindie.registration.clouds import Cloud, FloatArray, IntArray, content_rng
-from coindie.registration.params import Configurable, param
+from coindie.params import Configurable, param
 from coindie.scan import Scan
 
 

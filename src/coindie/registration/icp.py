@@ -15,7 +15,7 @@ import numpy as np
 
 from coindie.registration.base import Estimate, Timer
 from coindie.registration.clouds import Cloud, FloatArray, small_rotation, transform_points
-from coindie.registration.params import Configurable, param
+from coindie.params import Configurable, param
 
 #: Fewer correspondences than this leave the 6 unknowns of an ICP step under-determined.
 MIN_CORRESPONDENCES = 6

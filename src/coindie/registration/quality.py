@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from coindie.registration.clouds import Cloud, FloatArray, transform_points
-from coindie.registration.params import Configurable, param
+from coindie.params import Configurable, param
 
 
 @dataclass(frozen=True)

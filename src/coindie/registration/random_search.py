@@ -32,7 +32,7 @@ from coindie.registration.base import Estimate, Timer
 from coindie.registration.clouds import Cloud, FloatArray, content_rng
 from coindie.registration.icp import MIN_CORRESPONDENCES, point_to_plane_icp
 from coindie.registration.metrics import inverse
-from coindie.registration.params import Configurable, param
+from coindie.params import Configurable, param
 from coindie.registration.quality import robust_score
 from coindie.scan import Scan
 

@@ -16,7 +16,7 @@ import numpy as np
 
 from coindie.registration.base import Matches, SolverOutcome
 from coindie.registration.clouds import FloatArray, fit_rigid, transform_points
-from coindie.registration.params import Configurable, param
+from coindie.params import Configurable, param
 
 #: Least-squares refits on the inliers at most (they stop as soon as the inlier set no longer changes).
 _REFITS = 10

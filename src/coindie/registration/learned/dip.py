@@ -25,7 +25,7 @@ from coindie.registration.clouds import Cloud, FloatArray, IntArray, content_key
 from coindie.registration.features import grid_support
 from coindie.registration.learned.cache import DescriptorCache
 from coindie.registration.learned.lrf import canonical_patches
-from coindie.registration.params import Configurable, param
+from coindie.params import Configurable, param
 
 if TYPE_CHECKING:
     from coindie.registration.learned.dip_network import DIPNet

@@ -36,7 +36,7 @@ import numpy as np
 from coindie.errors import CoinDieError, ParameterError
 from coindie.registration.clouds import Cloud, FloatArray, IntArray, content_key, transform_points
 from coindie.registration.learned.cache import DescriptorCache
-from coindie.registration.params import Configurable, param
+from coindie.params import Configurable, param
 
 if TYPE_CHECKING:
     import torch
