@@ -36,10 +36,11 @@ import numpy as np
 from coindie.clustering import (
     METHODS,
     PAPER_THRESHOLD,
+    ConnectedComponents,
     ProbabilityGraph,
     ThresholdChoice,
-    cluster,
     evaluate,
+    get_algorithm,
     select_threshold,
     select_threshold_unsupervised,
     write_clusters,
@@ -198,7 +199,7 @@ def summarize(
             ):
                 if tau is None:
                     continue
-                result = evaluate(cluster(test, method, tau).labels, truth)
+                result = evaluate(get_algorithm(method, threshold=tau).fit(test).clustering_.labels, truth)
                 rows[label] = {"threshold": tau, **result.scores(), "mistakes": len(result.mistakes)}
             rows["best_possible"] = _oracle(test, truth, method)
             entry["methods"][method] = rows
@@ -229,7 +230,9 @@ def _oracle(test: ProbabilityGraph, truth: dict[str, str], method: str) -> dict[
     best = select_threshold(test, truth, method)
     return {
         "threshold": best.threshold,
-        **evaluate(cluster(test, method, best.threshold).labels, truth).scores(),
+        **evaluate(
+            get_algorithm(method, threshold=best.threshold).fit(test).clustering_.labels, truth
+        ).scores(),
     }
 
 
@@ -344,7 +347,8 @@ def _write_clusters(
         rows = entry["methods"].get("components", {})
         tau = rows.get("validation", rows.get("paper", {})).get("threshold", PAPER_THRESHOLD)
         write_clusters(
-            cluster(graphs[("cluster_test", group)], "components", tau), out / f"clusters_{group}.csv"
+            ConnectedComponents(threshold=tau).fit(graphs[("cluster_test", group)]).clustering_,
+            out / f"clusters_{group}.csv",
         )
 
 
