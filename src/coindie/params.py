@@ -216,12 +216,15 @@ class Configurable:
     """Base of the configurable classes: dataclasses whose declared fields are checked on creation.
 
     Subclasses may set ``NAME`` (used in messages and, for registration parts, as the parameter prefix,
-    e.g. ``teaser.noise_bound``; the class name when not set) and ``RULES`` (constraints between fields).
+    e.g. ``teaser.noise_bound``; the class name when not set, ``OWNER`` overrides it in messages) and
+    ``RULES`` (constraints between fields).
     A subclass with its own ``__post_init__`` calls ``super().__post_init__()`` first and validates
     nothing by hand.
     """
 
     NAME: ClassVar[str] = ""
+    #: The name in messages when ``NAME`` says something else (a scorer's name, say).
+    OWNER: ClassVar[str] = ""
     RULES: ClassVar[tuple[Rule, ...]] = ()
 
     def __post_init__(self) -> None:
@@ -235,8 +238,8 @@ class Configurable:
 
     @classmethod
     def owner(cls) -> str:
-        """The name messages give the class: ``NAME``, or the class name."""
-        return cls.NAME or cls.__name__
+        """The name messages give the class: ``OWNER``, else ``NAME``, else the class name."""
+        return cls.OWNER or cls.NAME or cls.__name__
 
     @classmethod
     def declared(cls) -> dict[str, Param]:
