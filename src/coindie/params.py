@@ -55,17 +55,20 @@ class Param:
         text = self._describe_value()
         return f"{text} or None" if self.optional else text
 
+    def _describe_tuple(self) -> str:
+        """ "a tuple of at least 1 ints in the range [1, inf)", "a (low, high) pair of numbers in ..." """
+        count = f"{self.length}" if self.length is not None else f"at least {self.min_length}"
+        if self.choices is not None:
+            return f"a tuple of {count} items, each {self._item().describe()}"
+        _article, kind, rest = self._item().describe().split(" ", 2)
+        what = "a (low, high) pair of" if self.ordered else f"a tuple of {count}"
+        return f"{what} {kind}s {rest}" + (" with low <= high" if self.ordered else "")
+
     def _describe_value(self) -> str:
+        if self.kind is tuple:
+            return self._describe_tuple()
         if self.choices is not None:
             return "one of " + ", ".join(repr(c) for c in self.choices)
-        if self.kind is tuple:
-            count = f"{self.length}" if self.length is not None else f"at least {self.min_length}"
-            items = self._item().describe().replace("a ", "", 1).replace("an ", "", 1)
-            what = "a (low, high) pair of" if self.ordered else f"a tuple of {count}"
-            plural = items.split(" ", 1)
-            return f"{what} {plural[0]}s {plural[1] if len(plural) > 1 else ''}".rstrip() + (
-                " with low <= high" if self.ordered else ""
-            )
         if self.kind in (bool, str) or self.kind not in _NUMBERS:
             return _KIND_NAMES.get(self.kind, f"a {self.kind.__name__}")
         left, right = "(" if self.low_open else "[", ")" if self.high_open else "]"
@@ -88,7 +91,9 @@ class Param:
     def _item(self) -> Param:
         """The declaration of one item of a tuple parameter."""
         kind = self.item or float
-        return Param(kind, None, self.doc, self.unit, self.low, self.high, self.low_open, self.high_open)
+        return Param(
+            kind, None, self.doc, self.unit, self.low, self.high, self.low_open, self.high_open, self.choices
+        )
 
     def parse(self, owner: str, name: str, text: str) -> Any:
         """A value from command-line text (``"0.5"``, ``"true"``, ``"identity"``), then checked."""
@@ -129,6 +134,8 @@ class Param:
         return items if isinstance(value, tuple) else list(items)
 
     def _in_range(self, value: Any) -> bool:
+        if self.kind is tuple:  # its items were checked by _converted_items
+            return True
         if self.choices is not None:
             return value in self.choices
         if self.kind not in _NUMBERS:
