@@ -15,6 +15,16 @@ SurfaceModel = Literal["plane", "quadric"]
 _SURFACES = ("plane", "quadric")
 
 
+def _positive_mm(default: float | None, doc: str, optional: bool = False) -> Any:
+    """A length in (0, inf) mm (or None when ``optional``)."""
+    return param(default, float, doc=doc, unit="mm", low=0.0, low_open=True, optional=optional)
+
+
+def _angle_deg(default: float, doc: str) -> Any:
+    """An angle in (0, 90] degrees."""
+    return param(default, float, doc=doc, unit="degrees", low=0.0, low_open=True, high=90.0)
+
+
 @dataclass(frozen=True, kw_only=True)
 class PreprocessConfig(Configurable):
     """Parameters of :func:`coindie.preprocess.preprocess` and of the canonical frame / height map.
@@ -30,13 +40,8 @@ class PreprocessConfig(Configurable):
         "'canonical' (robust best-fit plane to z=0, edge wall ignored), 'none' (only centred).",
         choices=("pca", "canonical", "none"),
     )
-    grid_size_mm: float | None = param(
-        d.GRID_SIZE_MM,
-        doc="Grid-sampling cell edge; None keeps every point.",
-        unit="mm",
-        low=0.0,
-        low_open=True,
-        optional=True,
+    grid_size_mm: float | None = _positive_mm(
+        d.GRID_SIZE_MM, "Grid-sampling cell edge; None keeps every point.", optional=True
     )
     grid_mode: GridMode = param(
         "mean",
@@ -44,46 +49,29 @@ class PreprocessConfig(Configurable):
         choices=("mean", "last"),
     )
     normals_k: int = param(d.NORMALS_K, doc="Neighbours per normal estimate (count).", low=3, high=256)
-    normals_radius_mm: float | None = param(
-        d.NORMALS_RADIUS_MM,
-        float,
-        doc="Neighbours farther than this are ignored; None: no limit.",
-        unit="mm",
-        low=0.0,
-        low_open=True,
-        optional=True,
+    normals_radius_mm: float | None = _positive_mm(
+        d.NORMALS_RADIUS_MM, "Neighbours farther than this are ignored; None: no limit.", optional=True
     )
     frame_model: SurfaceModel = param(
         "plane",
         doc="Canonical frame from the best-fit 'plane' or the tangent plane of a 'quadric'.",
         choices=_SURFACES,
     )
-    fit_max_normal_angle_deg: float = param(
+    fit_max_normal_angle_deg: float = _angle_deg(
         d.FIT_MAX_NORMAL_ANGLE_DEG,
-        doc="Points whose normal is farther than this from up are left out of the fit.",
-        unit="degrees",
-        low=0.0,
-        low_open=True,
-        high=90.0,
+        "Points whose normal is farther than this from up are left out of the fit.",
     )
     fit_iterations: int = param(
         d.FIT_ITERATIONS, doc="Reweighting iterations of the fit (count).", low=1, high=100
     )
-    heightmap_resolution_mm: float = param(
-        d.HEIGHTMAP_RESOLUTION_MM, doc="Height-map pixel edge.", unit="mm", low=0.0, low_open=True
-    )
+    heightmap_resolution_mm: float = _positive_mm(d.HEIGHTMAP_RESOLUTION_MM, "Height-map pixel edge.")
     detrend: SurfaceModel = param(
         "quadric",
         doc="Height-map values are heights above the best-fit 'plane' or 'quadric'.",
         choices=_SURFACES,
     )
-    raster_max_normal_angle_deg: float = param(
-        d.RASTER_MAX_NORMAL_ANGLE_DEG,
-        doc="Points steeper than this (from +z) are left out of the height map.",
-        unit="degrees",
-        low=0.0,
-        low_open=True,
-        high=90.0,
+    raster_max_normal_angle_deg: float = _angle_deg(
+        d.RASTER_MAX_NORMAL_ANGLE_DEG, "Points steeper than this (from +z) are left out of the height map."
     )
     fill_max_distance_mm: float = param(
         d.FILL_MAX_DISTANCE_MM,
