@@ -19,8 +19,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from coindie.errors import ParameterError
-from coindie.registration.clouds import Cloud, FloatArray, as_scan, content_key
 from coindie.params import Configurable, Param
+from coindie.registration.clouds import Cloud, FloatArray, as_scan, content_key
 from coindie.registration.quality import Acceptance, alignment
 from coindie.scan import Scan
 

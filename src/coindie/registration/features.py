@@ -13,9 +13,9 @@ from typing import Protocol
 
 import numpy as np
 
+from coindie.params import Configurable, param
 from coindie.registration.base import CorrespondenceSolver, Estimate, Matches, Timer
 from coindie.registration.clouds import Cloud, FloatArray, IntArray, content_rng
-from coindie.params import Configurable, param
 from coindie.scan import Scan
 
 

@@ -16,8 +16,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from coindie.registration.clouds import Cloud, FloatArray, transform_points
 from coindie.params import Configurable, param
+from coindie.registration.clouds import Cloud, FloatArray, transform_points
 
 
 @dataclass(frozen=True)

@@ -25,6 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.spatial.transform import Rotation
 
+from coindie.params import Configurable, param
 from coindie.preprocess.frames import rigid
 from coindie.preprocess.orientation import pca_transform, up_axis
 from coindie.preprocess.sampling import grid_sample
@@ -32,7 +33,6 @@ from coindie.registration.base import Estimate, Timer
 from coindie.registration.clouds import Cloud, FloatArray, content_rng
 from coindie.registration.icp import MIN_CORRESPONDENCES, point_to_plane_icp
 from coindie.registration.metrics import inverse
-from coindie.params import Configurable, param
 from coindie.registration.quality import robust_score
 from coindie.scan import Scan
 

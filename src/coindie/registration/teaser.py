@@ -21,10 +21,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from coindie.params import Configurable, param
 from coindie.registration.base import Matches, SolverOutcome
 from coindie.registration.clique import consistency_graph, maximum_clique
 from coindie.registration.clouds import BoolArray, FloatArray, IntArray, fit_rotation
-from coindie.params import Configurable, param
 
 #: A rotation needs at least this many matches (two independent TIMs).
 MIN_CLIQUE = 3
