@@ -32,4 +32,6 @@ def test_command_flags_reads_the_declared_flags() -> None:
 def test_run_names_its_flag_for_a_bad_parameter(tmp_path: Path) -> None:
     result = CliRunner().invoke(app, ["run", str(tmp_path / "nowhere"), "--workers", "-1"])
     assert result.exit_code == 2
-    assert "'workers' parameter (--workers) of RunConfig must be >= 0" in result.output
+    assert "'workers' parameter (--workers) of RunConfig must be an int in the range [0, inf)" in (
+        result.output
+    )

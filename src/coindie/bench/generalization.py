@@ -19,10 +19,8 @@ Hoards and projects are kept under OUT and resumed, so a rerun only does what is
 
 from __future__ import annotations
 
-import csv
-import json
 from collections.abc import Callable, Sequence
-from dataclasses import asdict, dataclass
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -92,9 +90,9 @@ def run_generalization(
             hoard, project = out / "hoards" / name, open_project(out / "projects" / name)
         else:
             hoard = _hoard(out / "hoards" / name, row, seed + k, workers, riedones_scale)
-            project = _project(out / "projects" / name, hoard, workers)
+            project = row_project(out / "projects" / name, hoard, workers)
         for scorer in SCORER_NAMES:
-            result = _evaluate(row, scorer, models[scorer], project, hoard)
+            result = evaluate_row(row, scorer, models[scorer], project, hoard)
             results.append(result)
             echo(
                 f"{row:>16} {scorer:>6}: FMI {result.fmi:.3f} ARI {result.ari:.3f} AUC {result.auc:.3f} "
@@ -124,7 +122,7 @@ def _hoard(folder: Path, row: str, seed: int, workers: int, riedones_scale: floa
     return folder
 
 
-def _project(folder: Path, hoard: Path, workers: int) -> Any:
+def row_project(folder: Path, hoard: Path, workers: int) -> Any:
     from coindie.project import init_project, open_project
     from coindie.project.run import RunConfig, run_project
 
@@ -137,7 +135,7 @@ def _project(folder: Path, hoard: Path, workers: int) -> Any:
     return project
 
 
-def _evaluate(row: str, scorer_name: str, scorer: Any, project: Any, hoard: Path) -> RowResult:
+def evaluate_row(row: str, scorer_name: str, scorer: Any, project: Any, hoard: Path) -> RowResult:
     from sklearn.metrics import roc_auc_score
 
     from coindie.clustering import (
@@ -207,14 +205,9 @@ def _seconds(pair: dict[str, Any], scorer: Any) -> float:
 
 
 def write_results(out: Path, results: list[RowResult]) -> None:
-    out.mkdir(parents=True, exist_ok=True)
-    fields = list(asdict(results[0]))
-    with (out / "results.csv").open("w", newline="") as handle:
-        writer = csv.DictWriter(handle, fieldnames=fields)
-        writer.writeheader()
-        writer.writerows(asdict(r) for r in results)
-    (out / "results.json").write_text(json.dumps([asdict(r) for r in results], indent=1) + "\n")
-    (out / "results.md").write_text(results_table(results))
+    from coindie.bench.plots import write_records
+
+    write_records(out, "results", results, results_table(results))
     plot_results(results, out / "generalization.png")
 
 
@@ -241,24 +234,11 @@ def results_table(results: list[RowResult]) -> str:
 
 
 def plot_results(results: list[RowResult], path: Path) -> None:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from coindie.bench.plots import fmi_bars
 
     rows = list(dict.fromkeys(r.row for r in results))
-    fig, ax = plt.subplots(figsize=(max(6.0, 0.45 * len(rows) + 2), 4.0))
-    width = 0.4
-    for k, scorer in enumerate(SCORER_NAMES):
-        values = {r.row: r.fmi for r in results if r.scorer == scorer}
-        xs = np.arange(len(rows)) + (k - 0.5) * width
-        ax.bar(xs, [values.get(row, np.nan) for row in rows], width, label=scorer)
-    ax.axhline(0.95, color="grey", lw=0.8, ls="--")
-    ax.set_xticks(np.arange(len(rows)), rows, rotation=60, ha="right", fontsize=8)
-    ax.set_ylim(0, 1.02)
-    ax.set_ylabel("FMI (no labels, shipped defaults)")
-    ax.set_title("Die clustering on hoards of other scanners, flans and wear")
-    ax.legend(loc="lower left")
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
+    series = {s: {r.row: r.fmi for r in results if r.scorer == s} for s in SCORER_NAMES}
+    fmi_bars(
+        rows, series, path, title="Die clustering on hoards of other scanners, flans and wear",
+        ylabel="FMI (no labels, shipped defaults)",
+    )  # fmt: skip

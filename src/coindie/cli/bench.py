@@ -117,6 +117,17 @@ def generalization(
         bool,
         typer.Option(help="Score the pairs the rows' projects hold with the shipped models; run nothing."),
     ] = False,
+    leave_one_out: Annotated[
+        bool,
+        typer.Option(
+            help="Per axis, train a relief model with the axis at its middle and test it on the rows "
+            "of its extremes that OUT holds (leave-one-out.md); no matrix rows are run."
+        ),
+    ] = False,
+    axes: Annotated[str, typer.Option(help="Comma-separated axes for --leave-one-out (default: all).")] = "",
+    training_scale: Annotated[
+        float, typer.Option(help="Scale of the study hoard each --leave-one-out model trains on.")
+    ] = 0.5,
 ) -> None:
     """Die clustering, scans only and shipped defaults, on hoards of other scanners, flans and wear:
     FMI, ARI, same-die pairs refused, pair AUC and time per pair, for the relief and paper scorers."""
@@ -124,6 +135,15 @@ def generalization(
 
     if workers < 1:
         raise ParameterError(f"--workers must be at least 1. Got {workers}.")
+    if leave_one_out:
+        from coindie.bench.leave_one_out import run_leave_one_out
+
+        chosen_axes = [a.strip() for a in axes.split(",") if a.strip()] or None
+        run_leave_one_out(
+            out, chosen_axes, seed=seed + 2000, workers=workers, scale=training_scale, echo=typer.echo
+        )
+        typer.echo((out / "leave-one-out.md").read_text())
+        return
     chosen = [r.strip() for r in rows.split(",") if r.strip()] or None
     run_generalization(
         out, chosen, seed=seed, workers=workers, riedones_scale=riedones_scale,

@@ -41,7 +41,12 @@ def cluster_command(
     as_json: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
 ) -> None:
     """Cluster faces into dies: threshold the same-die probabilities, then group."""
-    from coindie.clustering import PAPER_THRESHOLD, cluster, select_threshold_unsupervised, write_clusters
+    from coindie.clustering import (
+        PAPER_THRESHOLD,
+        get_algorithm,
+        select_threshold_unsupervised,
+        write_clusters,
+    )
 
     if threshold is not None and auto:
         raise ParameterError("give --threshold or --auto, not both")
@@ -58,7 +63,7 @@ def cluster_command(
         how = "given" if threshold is not None else "the paper's"
     corrections = _corrections(source, graph)
     if corrections is None:
-        clusters = cluster(graph, method, tau)
+        clusters = get_algorithm(method, threshold=tau).fit(graph).clustering_
     else:  # the experts' edits (coindie serve), replayed by the same function as the browser's
         from coindie.clustering.corrections import corrected_clusters
 

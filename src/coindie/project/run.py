@@ -33,6 +33,7 @@ import numpy as np
 
 from coindie import __version__
 from coindie.errors import CoinDieError
+from coindie.params import Configurable, param
 from coindie.project.backends import Backend, WorkerLost, make_backend
 from coindie.project.store import Project, ProjectError
 from coindie.project.workers import (
@@ -43,6 +44,7 @@ from coindie.project.workers import (
     prepare_face,
     score_batch,
 )
+from coindie.similarity.scorers import SCORERS
 
 #: ``auto`` plans every pair of a side up to this many faces (2 x 19,900 pairs for two such sides: ~20 min
 #: on 2 idle cores at the measured 0.06 CPU-s per pair); above it, the candidate search (BENCHMARK.md).
@@ -58,38 +60,30 @@ Echo = Callable[[str], None]
 
 
 @dataclass(frozen=True)
-class RunConfig:
+class RunConfig(Configurable):
     """The settings of a run (stored with it). The grid of the per-face cache is the histogram's finest."""
 
-    method: str = "relief"
+    method: str = param("relief", doc="the registration method (coindie methods lists them)")
     method_params: dict[str, Any] = field(default_factory=dict)
-    mode: str = "auto"
-    k: int = DEFAULT_K
-    workers: int = 0
-    dask: str | None = None
-    batch_faces: int = DEFAULT_BATCH_FACES
-    classifier: str | None = None
-    scorer: str = "relief"  # the shipped model used when no classifier file is given
-    registration_grid_mm: float = 0.1
-    retry_failed: bool = False
-    plan_only: bool = False
-    max_seconds: float | None = None  # stop scoring (cleanly, resumable) after this long
-
-    def __post_init__(self) -> None:
-        if self.mode not in MODES:
-            raise ProjectError(f"unknown run mode {self.mode!r}; known: {', '.join(MODES)}")
-        if self.k < 1:
-            raise ProjectError(f"The 'k' parameter of RunConfig must be >= 1. Got {self.k}.")
-        if self.batch_faces < 1:
-            raise ProjectError(f"batch_faces must be >= 1, got {self.batch_faces}")
-        if self.workers < 0:
-            raise ProjectError(
-                f"The 'workers' parameter of RunConfig must be >= 0 (0: one per core). Got {self.workers}."
-            )
-        from coindie.similarity.scorers import SCORERS
-
-        if self.scorer not in SCORERS:
-            raise ProjectError(f"unknown scorer {self.scorer!r}; known: {', '.join(SCORERS)}")
+    mode: str = param("auto", doc="which pairs are scored", choices=MODES)
+    k: int = param(DEFAULT_K, doc="candidates per face in candidate mode", low=1)
+    workers: int = param(0, doc="worker processes (0: one per core)", low=0)
+    dask: str | None = param(None, str, doc="a Dask scheduler address, or 'local'", optional=True)
+    batch_faces: int = param(DEFAULT_BATCH_FACES, doc="faces per side of a batch's tile", low=1)
+    classifier: str | None = param(
+        None, str, doc="a classifier file (else the scorer's shipped model)", optional=True
+    )
+    scorer: str = param(
+        "relief", doc="the shipped model used when no classifier file is given", choices=tuple(SCORERS)
+    )
+    registration_grid_mm: float = param(
+        0.1, doc="grid of the clouds registered (0: none)", unit="mm", low=0.0
+    )
+    retry_failed: bool = param(False, doc="score again the pairs that failed")
+    plan_only: bool = param(False, doc="prepare the faces and plan the pairs, score none")
+    max_seconds: float | None = param(
+        None, float, doc="stop scoring (cleanly, resumable) after this long", unit="s", low=0.0, optional=True
+    )
 
 
 @dataclass

@@ -20,8 +20,8 @@ from numpy.typing import ArrayLike, NDArray
 from coindie.arrays import FloatArray
 from coindie.caches import LRUCache
 from coindie.errors import ParameterError
+from coindie.params import Configurable, Param
 from coindie.registration.clouds import Cloud, as_scan, content_key
-from coindie.registration.params import Configurable, Param
 from coindie.registration.quality import Acceptance, alignment
 from coindie.scan import Scan
 

@@ -14,9 +14,9 @@ from typing import Protocol
 import numpy as np
 
 from coindie.arrays import FloatArray, IntArray
+from coindie.params import Configurable, param
 from coindie.registration.base import CorrespondenceSolver, Estimate, Matches, Timer
 from coindie.registration.clouds import Cloud, content_rng
-from coindie.registration.params import Configurable, param
 from coindie.scan import Scan
 
 

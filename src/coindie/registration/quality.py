@@ -17,8 +17,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from coindie.arrays import FloatArray
+from coindie.params import Configurable, param
 from coindie.registration.clouds import Cloud
-from coindie.registration.params import Configurable, param
 from coindie.transforms import transform_points
 
 

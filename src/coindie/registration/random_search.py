@@ -25,12 +25,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from coindie.arrays import FloatArray
+from coindie.params import Configurable, param
 from coindie.preprocess.orientation import pca_transform, up_axis
 from coindie.preprocess.sampling import grid_sample
 from coindie.registration.base import Estimate, Timer
 from coindie.registration.clouds import Cloud, content_rng
 from coindie.registration.icp import MIN_CORRESPONDENCES, point_to_plane_icp
-from coindie.registration.params import Configurable, param
 from coindie.registration.quality import robust_score
 from coindie.scan import Scan
 from coindie.transforms import euler_rotation, inverse, rigid

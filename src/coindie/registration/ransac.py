@@ -15,8 +15,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from coindie.arrays import FloatArray
+from coindie.params import Configurable, param
 from coindie.registration.base import Matches, SolverOutcome
-from coindie.registration.params import Configurable, param
 from coindie.transforms import fit_rigid, transform_points
 
 #: Least-squares refits on the inliers at most (they stop as soon as the inlier set no longer changes).

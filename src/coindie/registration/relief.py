@@ -26,12 +26,12 @@ import numpy as np
 from scipy import ndimage
 
 from coindie.arrays import BoolArray, FloatArray, IntArray
+from coindie.params import Configurable, param
 from coindie.preprocess.canonical import CanonicalFrame, canonical_frame
 from coindie.preprocess.heightmap import height_map
 from coindie.registration.base import Estimate, Timer
 from coindie.registration.clouds import Cloud
 from coindie.registration.icp import MIN_CORRESPONDENCES, IcpOutcome, point_to_plane_icp
-from coindie.registration.params import Configurable, param
 from coindie.registration.projective import ProjectedCloud
 from coindie.registration.relief_search import ReliefImage, align_reliefs, pose_score
 from coindie.scan import Scan
@@ -60,7 +60,23 @@ class ReliefSearch(Configurable):
     margin: float = param(
         0.6, unit="mm", low=0, doc="band inside the flan outline left out (edge wall, flan border)"
     )
-    angle_peaks: int = param(2, low=1, high=8, doc="rotation candidates tried (each with its 180° twin)")
+    angle_search: str = param(
+        "exhaustive",
+        choices=("exhaustive", "spectrum"),
+        doc="how the rotation is found: every turn by angle_step scored at reduced resolution "
+        "(exhaustive), or the peaks of the polar spectra's correlation (spectrum: faster, misses more "
+        "where flans overlap in part or crusts, holes or double strikes fill the spectrum)",
+    )
+    angle_step: float = param(
+        8.0, unit="deg", low=0.5, high=30.0, doc="turns tried by the exhaustive rotation search"
+    )
+    angle_peaks: int = param(
+        4,
+        low=1,
+        high=8,
+        doc="rotation candidates kept: the best turns of the exhaustive search (each tried again a "
+        "third of a step to either side), or the spectrum's peaks (each with its 180° twin)",
+    )
     coarse_step: int = param(
         2, low=1, high=4, doc="subsampling of the images to choose among angles (1 = full resolution)"
     )
@@ -183,6 +199,8 @@ class ReliefRegistration:
                 prepared_target.image,
                 n_angle_peaks=self.search.angle_peaks,
                 coarse_step=self.search.coarse_step,
+                search=self.search.angle_search,
+                angle_step_deg=self.search.angle_step,
             )
         T_init = _lift(planar.matrix(), prepared_source.frame, prepared_target.frame)
         with timer("icp"):

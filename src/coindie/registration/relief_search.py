@@ -5,10 +5,17 @@ A struck coin is a nearly flat relief. Once two scans are put in their canonical
 surface is z = 0, relief up), the transform between them is, to first order, a rotation about z and a
 translation in the plane. That 2-D problem is solved globally in a few FFTs:
 
-1. **Rotation** (Fourier–Mellin, without scale): the magnitude of a 2-D Fourier transform does not change when
-   the image is translated and turns with it when it is rotated. Resampled in polar coordinates, a rotation
-   becomes a circular shift along the angle axis, found by one 1-D circular correlation summed over radii.
-   A magnitude spectrum is centrally symmetric, so each peak θ leaves θ + 180° open.
+1. **Rotation**, by default by exhaustive search: the source is turned by every multiple of a few degrees and
+   each turn is correlated with the target at reduced resolution (below, in one batch of FFTs); the best
+   few turns go on. The alternative (``search="spectrum"``) is Fourier–Mellin without scale: the
+   magnitude of a 2-D Fourier transform does not change when the image is translated and turns with it
+   when it is rotated; resampled in polar coordinates, a rotation becomes a circular shift along the
+   angle axis, found by one 1-D circular correlation summed over radii (a magnitude spectrum is centrally
+   symmetric, so each peak θ leaves θ + 180° open). It is ten times cheaper but reads the whole
+   footprint's spectrum: where two flans overlap on half their surface, or crusts, a double strike or
+   holes fill the spectrum, the right angle is often not among its peaks (measured on the all-hard
+   synthetic mix: the planar pose right for 56 % of same-die pairs by the spectrum, 86 % by the search
+   at 8° steps, its 4 best turns tried again 2.7° to either side, 90 % at 6°).
 2. **Translation and the choice among angles**: for each candidate angle the source image is rotated and
    correlated with the target by *masked* normalised cross-correlation (Padfield, "Masked object registration
    in the Fourier domain", IEEE TIP 2012), which ignores everything outside each coin's footprint (the flan
@@ -140,28 +147,8 @@ def masked_ncc(
         fixed = FixedSpectra.of(fixed, fixed_mask, moving.shape)
     if fixed.moving_shape != moving.shape:
         raise ValueError(f"moving image {moving.shape} does not match the spectra's {fixed.moving_shape}")
-    shape = fixed.shape
-    out = (fixed.fixed_shape[0] + moving.shape[0] - 1, fixed.fixed_shape[1] + moving.shape[1] - 1)
-    mm = moving_mask[::-1, ::-1].astype(np.float32)
-    m = moving[::-1, ::-1].astype(np.float32) * mm
-
-    def forward(a: FloatImage) -> NDArray[np.complex128]:
-        return fft.rfft2(a, shape)
-
-    def backward(a: NDArray[np.complex128]) -> FloatImage:
-        return fft.irfft2(a, shape)[: out[0], : out[1]]
-
-    F_m, F_mm = forward(m), forward(mm)
-    overlap = np.maximum(np.rint(backward(fixed.F_fm * F_mm)), 1.0)
-    sum_f, sum_m = backward(fixed.F_f * F_mm), backward(fixed.F_fm * F_m)
-    numerator = backward(fixed.F_f * F_m) - sum_f * sum_m / overlap
-    var_f = backward(fixed.F_ff * F_mm) - sum_f**2 / overlap
-    var_m = backward(fixed.F_fm * forward(m * m)) - sum_m**2 / overlap
-    denominator = np.sqrt(np.maximum(var_f * var_m, 0.0))
-    valid = denominator > 1e-9 * max(float(denominator.max()), 1e-300)
-    ncc = np.where(valid, numerator / np.where(valid, denominator, 1.0), 0.0)
-    ncc[overlap < min_overlap] = 0.0
-    return np.clip(ncc, -1.0, 1.0), overlap
+    ncc, overlap = _masked_ncc_batch(fixed, moving[None], moving_mask[None], min_overlap)
+    return ncc[0], overlap[0]
 
 
 def rotate_image(
@@ -225,32 +212,53 @@ class ReliefImage:
         """Detail and mask at 1/step resolution (plain subsampling: the detail is already smooth)."""
         return self.detail[::step, ::step], self.mask[::step, ::step]
 
-    def spectra(self, step: int) -> FixedSpectra:
-        """This image as the fixed side of masked NCC at 1/step resolution (cached)."""
-        if step not in self._spectra:
-            detail, mask = self.reduced(step)
-            self._spectra[step] = FixedSpectra.of(detail, mask, detail.shape)
-        return self._spectra[step]
+    def cropped(self, step: int) -> tuple[FloatImage, BoolImage, int]:
+        """Detail and mask at 1/step resolution cut to the square about the image's centre that holds
+        the footprint at every turn, and the index where the square starts (rows and columns alike).
+
+        The field is wider than a coin so that any face fits; correlating the square alone costs half
+        as much, and pixels outside both footprints change no masked correlation."""
+        detail, mask = self.reduced(step)
+        size = detail.shape[0]
+        centre = (self.detail.shape[0] - 1.0) / 2.0 / step
+        rows, cols = np.nonzero(mask)
+        if len(rows) == 0:
+            return detail, mask, 0
+        reach = float(np.sqrt(((rows - centre) ** 2 + (cols - centre) ** 2).max()))
+        start = max(int(np.floor(centre - reach)) - 1, 0)
+        stop = min(int(np.ceil(centre + reach)) + 2, size)
+        start = min(start, size - stop)  # the same margin on both sides keeps the centre where it was
+        stop = size - start
+        return detail[start:stop, start:stop], mask[start:stop, start:stop], start
 
 
 def align_reliefs(
     source: ReliefImage,
     target: ReliefImage,
     *,
-    n_angle_peaks: int = 2,
+    n_angle_peaks: int = 4,
     coarse_step: int = 2,
     min_overlap: float = 0.3,
+    search: str = "exhaustive",
+    angle_step_deg: float = 8.0,
 ) -> PlanarAlignment:
     """Rotation + translation taking the source relief onto the target (see the module docstring).
 
-    Every candidate angle is scored at 1/``coarse_step`` resolution; the best one is then correlated at
-    full resolution for its translation and final score.
+    ``search="exhaustive"``: every turn by ``angle_step_deg`` is scored at 1/``coarse_step`` resolution,
+    and the ``n_angle_peaks`` best are scored again a third of a step to either side. ``"spectrum"``: the
+    ``n_angle_peaks`` peaks of the spectra's correlation, each with its 180° twin, are scored. The best
+    angle is then correlated at full resolution for its translation and final score.
     """
     if source.detail.shape != target.detail.shape or source.pixel_mm != target.pixel_mm:
         raise ValueError("relief images must share their grid (shape and pixel size)")
-    angles = rotation_candidates(source.polar, target.polar, n_peaks=n_angle_peaks)
-    candidates = [a + half for a in angles for half in (0.0, np.pi)]
-    tried = [(a, *_correlate(source, target, a, coarse_step, min_overlap)) for a in candidates]
+    if search == "exhaustive":
+        tried = _search_turns(source, target, angle_step_deg, n_angle_peaks, coarse_step, min_overlap)
+    elif search == "spectrum":
+        angles = rotation_candidates(source.polar, target.polar, n_peaks=n_angle_peaks)
+        candidates = [a + half for a in angles for half in (0.0, np.pi)]
+        tried = [(a, *_correlate(source, target, a, coarse_step, min_overlap)) for a in candidates]
+    else:
+        raise ValueError(f"search must be 'exhaustive' or 'spectrum', not {search!r}")
     angle, coarse_score, coarse_shift = max(tried, key=lambda t: t[1])
     score, shift = coarse_score, coarse_shift
     if coarse_step > 1:
@@ -287,17 +295,113 @@ def _correlate(
 ) -> tuple[float, tuple[float, float]]:
     """Masked NCC of the source turned by ``angle`` against the target at 1/step resolution: the peak
     score and the translation (mm)."""
-    fixed = target.spectra(step)
+    scores, shifts = correlate_turns(source, target, np.array([angle]), step, min_overlap)
+    return float(scores[0]), (float(shifts[0, 0]), float(shifts[0, 1]))
+
+
+def _search_turns(
+    source: ReliefImage, target: ReliefImage, step_deg: float, n_best: int, step: int, min_overlap: float
+) -> list[tuple[float, float, tuple[float, float]]]:
+    """(angle, score, shift) of the turns tried by the exhaustive search: every ``step_deg``, then the
+    ``n_best`` best a third of a step to either side, all at 1/``step`` resolution. (A sweep at half that
+    resolution, then the best at full, misses more: 80 % right poses against 86 % on the all-hard mix.)"""
+    n_turns = max(int(round(360.0 / step_deg)), 1)
+    turns = np.arange(n_turns) * (2.0 * np.pi / n_turns)
+    scores, shifts = correlate_turns(source, target, turns, step, min_overlap)
+    best = np.argsort(scores)[::-1][:n_best]
+    third = np.pi / n_turns / 1.5
+    nearby = np.concatenate([turns[best] - third, turns[best] + third])
+    near_scores, near_shifts = correlate_turns(source, target, nearby, step, min_overlap)
+    angles = np.concatenate([turns[best], nearby])
+    all_scores = np.concatenate([scores[best], near_scores])
+    all_shifts = np.concatenate([shifts[best], near_shifts])
+    tried = [
+        (float(a), float(s), (float(d[0]), float(d[1])))
+        for a, s, d in zip(angles, all_scores, all_shifts, strict=True)
+    ]
+    # The best angle to below the step, by halving: try half the last step to either side, keep the best.
+    best_angle, best_score, best_shift = max(tried, key=lambda entry: entry[1])
+    delta = third / 2.0
+    while delta > np.radians(0.2):
+        for candidate in (best_angle - delta, best_angle + delta):
+            score, shift = _correlate(source, target, candidate, step, min_overlap)
+            tried.append((candidate, score, shift))
+        best_angle, best_score, best_shift = max(tried, key=lambda entry: entry[1])
+        delta /= 2.0
+    return tried
+
+
+def correlate_turns(
+    source: ReliefImage,
+    target: ReliefImage,
+    angles: NDArray[np.float64],
+    step: int,
+    min_overlap: float,
+    batch: int = 32,
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Peak masked NCC and its (x, y) translation (mm) of the source turned by each angle against the
+    target, at 1/``step`` resolution: :func:`_correlate` for many angles, the FFTs of a batch of turned
+    images taken in one call (the Python per angle is what a loop of single correlations spends most on)."""
+    detail, mask, source_start = source.cropped(step)
+    fixed_detail, fixed_mask, target_start = target.cropped(step)
+    fixed = _cropped_spectra(target, step, detail.shape)
     # Rotating the reduced image about the full image's centre (in reduced pixels) is the reduced
     # rotated image, at 1/step^2 of the cost.
-    detail, mask = source.reduced(step)
-    centre = (np.asarray(source.detail.shape, dtype=np.float64) - 1.0) / 2.0 / step
-    moving = rotate_image(detail, angle, centre=centre)
-    moving_mask = rotate_image(mask.astype(np.float64), angle, centre=centre) > 0.5
-    min_pixels = min_overlap * min(target.reduced(step)[1].sum(), source.reduced(step)[1].sum())
-    ncc, _ = masked_ncc(fixed, moving, None, moving_mask, min_pixels)
-    shift = _peak_shift(ncc, moving.shape) * source.pixel_mm * step
-    return float(ncc.max()), (float(shift[0]), float(shift[1]))
+    centre = (np.asarray(source.detail.shape, dtype=np.float64) - 1.0) / 2.0 / step - source_start
+    min_pixels = min_overlap * min(fixed_mask.sum(), mask.sum())
+    # A crop that starts later moves the correlation's origin: back to the full images' shifts.
+    origin = float(source_start - target_start)
+    scores = np.empty(len(angles))
+    shifts = np.empty((len(angles), 2))
+    for first in range(0, len(angles), batch):
+        chunk = angles[first : first + batch]
+        moving = np.stack([rotate_image(detail, a, centre=centre) for a in chunk])
+        moving_mask = np.stack([rotate_image(mask.astype(np.float64), a, centre=centre) > 0.5 for a in chunk])
+        ncc, _ = _masked_ncc_batch(fixed, moving, moving_mask, min_pixels)
+        for i in range(len(chunk)):
+            scores[first + i] = float(ncc[i].max())
+            shifts[first + i] = (_peak_shift(ncc[i], moving.shape[1:]) - origin) * source.pixel_mm * step
+    return scores, shifts
+
+
+def _cropped_spectra(image: ReliefImage, step: int, moving_shape: tuple[int, ...]) -> FixedSpectra:
+    """The fixed-side spectra of ``image``'s cropped square for moving images of ``moving_shape`` (cached
+    with the image's other spectra)."""
+    key = hash(("cropped", step, tuple(moving_shape)))
+    if key not in image._spectra:
+        detail, mask, _ = image.cropped(step)
+        image._spectra[key] = FixedSpectra.of(detail, mask, moving_shape)
+    return image._spectra[key]
+
+
+def _masked_ncc_batch(
+    fixed: FixedSpectra, moving: FloatImage, moving_mask: BoolImage, min_overlap: float
+) -> tuple[FloatImage, FloatImage]:
+    """:func:`masked_ncc` for a stack of moving images (axis 0) against one fixed image, the FFTs of the
+    whole stack taken in one call each."""
+    shape = fixed.shape
+    out = (fixed.fixed_shape[0] + moving.shape[1] - 1, fixed.fixed_shape[1] + moving.shape[2] - 1)
+    mm = moving_mask[:, ::-1, ::-1].astype(np.float32)
+    m = moving[:, ::-1, ::-1].astype(np.float32) * mm
+
+    def forward(a: FloatImage) -> NDArray[np.complex128]:
+        return fft.rfft2(a, shape, axes=(-2, -1))
+
+    def backward(a: NDArray[np.complex128]) -> FloatImage:
+        return fft.irfft2(a, shape, axes=(-2, -1))[:, : out[0], : out[1]]
+
+    F_m, F_mm = forward(m), forward(mm)
+    overlap = np.maximum(np.rint(backward(fixed.F_fm * F_mm)), 1.0)
+    sum_f, sum_m = backward(fixed.F_f * F_mm), backward(fixed.F_fm * F_m)
+    numerator = backward(fixed.F_f * F_m) - sum_f * sum_m / overlap
+    var_f = backward(fixed.F_ff * F_mm) - sum_f**2 / overlap
+    var_m = backward(fixed.F_fm * forward(m * m)) - sum_m**2 / overlap
+    denominator = np.sqrt(np.maximum(var_f * var_m, 0.0))
+    top = denominator.reshape(len(moving), -1).max(axis=1)[:, None, None]
+    valid = denominator > 1e-9 * np.maximum(top, 1e-300)
+    ncc = np.where(valid, numerator / np.where(valid, denominator, 1.0), 0.0)
+    ncc[overlap < min_overlap] = 0.0
+    return np.clip(ncc, -1.0, 1.0), overlap
 
 
 def _refine_shift(

@@ -26,6 +26,7 @@ from scipy.spatial import cKDTree
 from coindie.arrays import FloatArray
 from coindie.caches import LRUCache
 from coindie.errors import ParameterError
+from coindie.params import Configurable, param
 from coindie.scan import Scan
 
 #: Faces kept ready by default (sampled points and k-d tree): a 0.05 mm face of 150k points takes ~10 MB.
@@ -33,7 +34,7 @@ FACE_CACHE_SIZE = 16
 
 
 @dataclass(frozen=True)
-class HistogramSettings:
+class HistogramSettings(Configurable):
     """How a registered pair becomes a histogram; the defaults are the paper's.
 
     Attributes:
@@ -47,23 +48,19 @@ class HistogramSettings:
             the source->target one only.
     """
 
-    bins: int = 70
-    max_distance_mm: float = 0.6
-    max_normal_angle_rad: float = 1.0
-    source_grid_mm: float = 0.1
-    target_grid_mm: float = 0.05
-    symmetric: bool = False
-
-    def __post_init__(self) -> None:
-        if not (isinstance(self.bins, int) and self.bins >= 1):
-            raise ParameterError(f"The 'bins' setting must be a positive integer. Got {self.bins!r}.")
-        for name in ("max_distance_mm", "source_grid_mm", "target_grid_mm"):
-            value = getattr(self, name)
-            if not (isinstance(value, int | float) and np.isfinite(value) and value > 0):
-                raise ParameterError(f"The {name!r} setting must be a positive number of mm. Got {value!r}.")
-        angle = self.max_normal_angle_rad
-        if not (isinstance(angle, int | float) and 0 < angle <= np.pi):
-            raise ParameterError(f"The 'max_normal_angle_rad' setting must be in (0, pi]. Got {angle!r}.")
+    bins: int = param(70, doc="number of histogram bins", low=1)
+    max_distance_mm: float = param(0.6, doc="histogram range 0..max", unit="mm", low=0.0, low_open=True)
+    max_normal_angle_rad: float = param(
+        1.0, doc="normals farther from the face's main normal are left out", unit="rad", low=0.0,
+        low_open=True, high=float(np.pi),
+    )  # fmt: skip
+    source_grid_mm: float = param(
+        0.1, doc="grid-sampling cell of the source", unit="mm", low=0.0, low_open=True
+    )
+    target_grid_mm: float = param(
+        0.05, doc="grid-sampling cell of the target", unit="mm", low=0.0, low_open=True
+    )
+    symmetric: bool = param(False, doc="mean of both directions' histograms")
 
     @property
     def bin_edges(self) -> FloatArray:
