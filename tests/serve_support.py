@@ -83,8 +83,8 @@ def corresponding_pixels(source, target: str, moved: str, n: int = 4) -> tuple[l
     found through the pair's stored transform (what an expert's clicks on a well-registered pair give)."""
     import numpy as np
 
-    from coindie.preprocess.frames import apply
     from coindie.serve import images
+    from coindie.transforms import apply
 
     record = source.pair_record(target, moved)
     grid_t, values_t, _ = images.own_frame(source.scan_paths[target])

@@ -1,6 +1,6 @@
 """Synthetic coin faces with a known transform between them, for the registration tests and
 ``benchmarks/bench_registration_methods.py`` (a test helper, not part of the library: tests import it as
-``synthetic_pairs``, found like ``real_data`` on the tests' path).
+``synthetic_pairs``, found like ``real_data`` on the tests' path). Poses come from :mod:`coindie.transforms`.
 
 A small, self-contained generator (the hoard generator in ``coindie.synth`` models dies, striking and wear;
 this one only needs a surface two scans share): a shallow dome carrying a relief of Gaussian bumps and
@@ -14,9 +14,9 @@ from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import NDArray
-from scipy.spatial.transform import Rotation
 
 from coindie.scan import Scan
+from coindie.transforms import random_pose
 
 FloatArray = NDArray[np.float64]
 
@@ -106,29 +106,6 @@ def scan_relief(
     xy = xy[np.hypot(xy[:, 0] - centre[0], xy[:, 1] - centre[1]) <= radius]
     z = relief.height(xy) + rng.normal(0.0, noise, len(xy))
     return Scan(points=np.column_stack([xy, z]), normals=relief.normals(xy), id=face_id)
-
-
-def rigid_transform(
-    rotation_deg: tuple[float, float, float], translation: tuple[float, float, float]
-) -> FloatArray:
-    """The 4x4 transform rotating by extrinsic x, y, z angles (degrees), then translating (mm)."""
-    T = np.eye(4)
-    T[:3, :3] = Rotation.from_euler("xyz", rotation_deg, degrees=True).as_matrix()
-    T[:3, 3] = translation
-    return T
-
-
-def random_pose(
-    rng: np.random.Generator,
-    *,
-    max_tilt_deg: float = 25.0,
-    max_spin_deg: float = 180.0,
-    max_shift: float = 5.0,
-) -> FloatArray:
-    """A random rigid transform as in the paper's benchmark: x/y within ±25°, z within ±180°."""
-    tilt = rng.uniform(-max_tilt_deg, max_tilt_deg, 2)
-    spin = rng.uniform(-max_spin_deg, max_spin_deg)
-    return rigid_transform((tilt[0], tilt[1], spin), tuple(rng.uniform(-max_shift, max_shift, 3)))
 
 
 @dataclass(frozen=True)

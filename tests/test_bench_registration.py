@@ -13,7 +13,7 @@ from typer.testing import CliRunner
 from coindie.bench.registration import benchmark_registration, plan_pairs, random_turn, read_pairs
 from coindie.cli.app import app
 from coindie.io.truth import TruthError, load_truth
-from coindie.preprocess.frames import rotation_angle_deg
+from coindie.transforms import rotation_angle_deg
 
 
 @pytest.fixture(scope="module")

@@ -11,7 +11,7 @@ import pytest
 from coindie.candidates import candidate_pairs, candidate_recall, nearest_neighbours
 from coindie.candidates.descriptor import face_descriptor
 from coindie.preprocess import grid_sample
-from coindie.preprocess.frames import rigid
+from coindie.transforms import rigid
 
 
 @pytest.fixture(scope="module")

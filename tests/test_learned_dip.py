@@ -8,11 +8,12 @@ import torch
 from scipy.spatial.transform import Rotation
 
 from coindie.errors import CoinDieError, ParameterError
-from coindie.registration.clouds import Cloud, transform_points
+from coindie.registration.clouds import Cloud
 from coindie.registration.learned.dip import DIPConfig, DIPDescriptor, load_model, save_model
 from coindie.registration.learned.dip_network import DIPNet, embed
 from coindie.registration.learned.lrf import canonical_patches, local_frames, patch_indices, patches, to_local
-from synthetic_pairs import make_coin_pair, rigid_transform
+from coindie.transforms import euler_rigid, transform_points
+from synthetic_pairs import make_coin_pair
 
 RADIUS = 1.0
 SMALL = DIPConfig(radius=RADIUS, n_points=64, widths=(16, 32), head=(16,), dim=32)
@@ -120,7 +121,7 @@ def _settle_batch_norm(model: DIPNet) -> None:
 
 
 def test_descriptors_of_a_moved_cloud_are_unchanged_and_unit_norm(coin: Cloud, network: DIPNet) -> None:
-    T = rigid_transform((20, -10, 135), (3, 4, 5))
+    T = euler_rigid((20, -10, 135), (3, 4, 5))
     moved = Cloud(transform_points(T, coin.points), coin.normals @ T[:3, :3].T)
     dip = DIPDescriptor(voxel=0, model=network, batch=100)
     at = np.arange(0, len(coin.points), 53)

@@ -9,7 +9,6 @@ import pytest
 from scipy.spatial.transform import Rotation
 
 from coindie.io.truth import FaceTruth, HoardTruth, TruthError, load_truth
-from coindie.registration.clouds import transform_points
 from coindie.registration.learned.pairs import (
     TRAINING,
     VALIDATION,
@@ -20,6 +19,7 @@ from coindie.registration.learned.pairs import (
     match_points,
     split_pairs,
 )
+from coindie.transforms import transform_points
 
 VOXEL = 0.2
 

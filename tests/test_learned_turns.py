@@ -9,8 +9,9 @@ torch = pytest.importorskip("torch")
 
 from scipy.spatial.transform import Rotation  # noqa: E402
 
+from coindie.arrays import FloatArray, IntArray  # noqa: E402
 from coindie.registration.base import Timer  # noqa: E402
-from coindie.registration.clouds import Cloud, FloatArray, IntArray, transform_points  # noqa: E402
+from coindie.registration.clouds import Cloud  # noqa: E402
 from coindie.registration.features import FeatureRegistration, MutualNN  # noqa: E402
 from coindie.registration.learned.fcgf import (  # noqa: E402
     FCGFConfig,
@@ -23,7 +24,8 @@ from coindie.registration.learned.fcgf import (  # noqa: E402
 from coindie.registration.learned.turns import TurnSearchRegistration  # noqa: E402
 from coindie.registration.metrics import rotation_error_deg, translation_error_mm  # noqa: E402
 from coindie.registration.teaser import TeaserSolver  # noqa: E402
-from synthetic_pairs import make_coin_pair, rigid_transform  # noqa: E402
+from coindie.transforms import euler_rigid, transform_points  # noqa: E402
+from synthetic_pairs import make_coin_pair  # noqa: E402
 
 
 @pytest.fixture(scope="module")
@@ -33,7 +35,7 @@ def face() -> Cloud:
 
 
 def test_levelling_turns_the_fitted_plane_to_z_about_the_centroid(face: Cloud) -> None:
-    T_tilt = rigid_transform((20.0, -12.0, 70.0), (3.0, 1.0, -2.0))
+    T_tilt = euler_rigid((20.0, -12.0, 70.0), (3.0, 1.0, -2.0))
     tilted = transform_points(T_tilt, face.points)
     tilted_normals = face.normals @ T_tilt[:3, :3].T
     L = levelling(tilted, tilted_normals)
@@ -90,7 +92,7 @@ class _OracleViews:
 
 def test_matching_against_every_view_finds_the_partners_of_the_right_one() -> None:
     pair = make_coin_pair(
-        seed=4, radius=5.0, spacing=0.2, T_target_source=rigid_transform((3, -2, 140), (2, 1, 0))
+        seed=4, radius=5.0, spacing=0.2, T_target_source=euler_rigid((3, -2, 140), (2, 1, 0))
     )
     source, target = (Cloud(s.points, s.normals) for s in (pair.source, pair.target))
     oracle = _OracleViews(np.linalg.inv(pair.T_target_source), views=3, right=2)
@@ -174,7 +176,7 @@ def _inlier_ratio(tilt_turn_deg: float, view: int | None) -> float:
 
     pair = make_coin_pair(seed=5, radius=6.0, T_target_source=np.eye(4))
     face = Cloud(pair.target.points, pair.target.normals)
-    T = rigid_transform((15.0, -10.0, tilt_turn_deg), (2.0, -1.0, 0.5))
+    T = euler_rigid((15.0, -10.0, tilt_turn_deg), (2.0, -1.0, 0.5))
     copy = Cloud(transform_points(T, face.points), face.normals @ T[:3, :3].T)
     descriptor, rng = FCGFDescriptor(), np.random.default_rng(0)
     rows = []

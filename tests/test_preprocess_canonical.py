@@ -7,7 +7,7 @@ import pytest
 
 from coindie.errors import ParameterError
 from coindie.preprocess import canonical_frame, height_map
-from coindie.preprocess.frames import angle_between_deg, apply
+from coindie.transforms import angle_between_deg, apply
 from test_preprocess_synthetic import SyntheticCoin, make_scan, random_pose
 
 # Linear algebra under test (plane and quadric fits (least squares)):

@@ -7,7 +7,7 @@ import pytest
 from scipy.spatial.transform import Rotation
 
 from coindie.preprocess import orient_to_z, up_axis
-from coindie.preprocess.frames import angle_between_deg, apply, rigid, rotation_angle_deg, rotation_between
+from coindie.transforms import angle_between_deg, apply, rigid, rotation_angle_deg, rotation_between
 from test_preprocess_synthetic import SyntheticCoin, make_scan, random_pose
 
 # Linear algebra under test (PCA axes (eigh) and rotations between directions):

@@ -12,8 +12,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.spatial.transform import Rotation
 
-from coindie.preprocess.frames import rigid
 from coindie.scan import Scan
+from coindie.transforms import rigid
 
 #: (x mm, y mm, height mm, sigma mm): a few bumps of known heights, away from the rim.
 BUMPS = ((-3.0, 2.5, 0.30, 0.7), (2.5, 3.0, 0.20, 0.5), (0.5, -3.5, 0.25, 0.8), (4.0, -1.0, 0.15, 0.4))

@@ -12,14 +12,15 @@ from typer.testing import CliRunner
 from coindie.cli.app import app
 from coindie.io import write_ply
 from coindie.registration import list_methods, rotation_error_deg, translation_error_mm
-from synthetic_pairs import CoinPair, make_coin_pair, rigid_transform
+from coindie.transforms import euler_rigid
+from synthetic_pairs import CoinPair, make_coin_pair
 
 runner = CliRunner()
 
 
 @pytest.fixture(scope="module")
 def files(tmp_path_factory) -> tuple[Path, Path, CoinPair]:
-    pair = make_coin_pair(seed=4, radius=4.0, T_target_source=rigid_transform((1, 2, 6), (0.3, 0.1, -0.2)))
+    pair = make_coin_pair(seed=4, radius=4.0, T_target_source=euler_rigid((1, 2, 6), (0.3, 0.1, -0.2)))
     folder = tmp_path_factory.mktemp("scans")
     source = write_ply(folder / "L0001D.ply", pair.source)
     target = write_ply(folder / "L0002D.ply", pair.target)
@@ -63,7 +64,7 @@ def test_register_prints_a_readable_report_and_takes_parameters(files) -> None:
 
 def test_an_invalid_result_exits_with_code_1_and_says_why(files, tmp_path: Path) -> None:
     source, target, pair = files
-    far = write_ply(tmp_path / "far.ply", pair.source.transformed(rigid_transform((0, 0, 0), (1000, 0, 0))))
+    far = write_ply(tmp_path / "far.ply", pair.source.transformed(euler_rigid((0, 0, 0), (1000, 0, 0))))
     result = runner.invoke(app, ["register", str(far), str(target), "--method", "icp"])
     assert result.exit_code == 1
     assert "valid            NO:" in result.output
@@ -114,7 +115,7 @@ def test_methods_as_json_for_one_method() -> None:
 
 
 def test_register_defaults_to_our_relief_method_and_recovers_a_large_turn(tmp_path) -> None:
-    turn = rigid_transform((4, -3, 120), (0.5, -0.3, 0.1))
+    turn = euler_rigid((4, -3, 120), (0.5, -0.3, 0.1))
     pair = make_coin_pair(seed=9, radius=6.0, T_target_source=turn)
     source = write_ply(tmp_path / "L0010D.ply", pair.source)
     target = write_ply(tmp_path / "L0011D.ply", pair.target)

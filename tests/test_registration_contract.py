@@ -26,9 +26,9 @@ from coindie.registration import (
     rotation_error_deg,
     translation_error_mm,
 )
-from coindie.registration.metrics import inverse
 from coindie.scan import Scan
-from synthetic_pairs import CoinPair, make_coin_pair, random_relief, rigid_transform, scan_relief
+from coindie.transforms import euler_rigid, inverse
+from synthetic_pairs import CoinPair, make_coin_pair, random_relief, scan_relief
 
 RADIUS = 6.0
 #: (degrees, mm) a method's estimate must be within; methods not listed get DEFAULT_TOLERANCE.
@@ -45,8 +45,8 @@ def tolerance(method: str) -> tuple[float, float]:
 
 @pytest.fixture(scope="module")
 def pairs() -> dict[str, CoinPair]:
-    hard = rigid_transform((15.0, -10.0, 120.0), (5.0, -3.0, 2.0))
-    mild = rigid_transform((2.0, -1.0, 8.0), (0.3, -0.2, 0.1))
+    hard = euler_rigid((15.0, -10.0, 120.0), (5.0, -3.0, 2.0))
+    mild = euler_rigid((2.0, -1.0, 8.0), (0.3, -0.2, 0.1))
     return {
         "global": make_coin_pair(seed=5, radius=RADIUS, T_target_source=hard),
         "local": make_coin_pair(seed=5, radius=RADIUS, T_target_source=mild),
@@ -137,7 +137,7 @@ def test_surfaces_without_a_common_part_fit_worse_than_the_true_pair(method: str
 @pytest.mark.parametrize("method", [m for m in METHODS if method_info(m).local])
 def test_local_methods_report_clouds_a_metre_apart_as_not_valid(method: str, pairs) -> None:
     pair = pair_for(method, pairs)
-    far = pair.source.transformed(rigid_transform((0.0, 0.0, 0.0), (1000.0, 0.0, 0.0)))
+    far = pair.source.transformed(euler_rigid((0.0, 0.0, 0.0), (1000.0, 0.0, 0.0)))
     result = get_method(method).register(far, pair.target)
     assert not result.valid
     assert "overlap" in result.reason or "pairs" in result.reason

@@ -7,6 +7,7 @@ from dataclasses import dataclass
 import numpy as np
 import pytest
 
+from coindie.arrays import IntArray
 from coindie.registration import (
     FPFH,
     Acceptance,
@@ -23,9 +24,10 @@ from coindie.registration import (
 )
 from coindie.registration import base as registration_base
 from coindie.registration.base import Matches
-from coindie.registration.clouds import Cloud, IntArray, transform_points
+from coindie.registration.clouds import Cloud
 from coindie.registration.features import nearest_rows
-from synthetic_pairs import make_coin_pair, rigid_transform
+from coindie.transforms import euler_rigid, transform_points
+from synthetic_pairs import make_coin_pair
 
 # Linear algebra under test (FPFH under rigid motions, nearest rows by matrix products):
 # make test reruns this module under other OpenBLAS kernels.
@@ -34,13 +36,13 @@ pytestmark = pytest.mark.numeric
 
 @pytest.fixture(scope="module")
 def pair():
-    return make_coin_pair(seed=3, radius=5.0, T_target_source=rigid_transform((10, 5, -70), (2, 1, -1)))
+    return make_coin_pair(seed=3, radius=5.0, T_target_source=euler_rigid((10, 5, -70), (2, 1, -1)))
 
 
 def test_fpfh_descriptors_do_not_change_when_the_cloud_is_moved(pair) -> None:
     fpfh = FPFH(voxel=0)
     cloud = Cloud.of(pair.target)
-    moved = Cloud.of(pair.target.transformed(rigid_transform((20, -10, 135), (3, 4, 5))))
+    moved = Cloud.of(pair.target.transformed(euler_rigid((20, -10, 135), (3, 4, 5))))
     at = np.arange(0, len(cloud.points), 97)
     np.testing.assert_allclose(fpfh.describe(moved, at), fpfh.describe(cloud, at), atol=1e-6)
     assert fpfh.describe(cloud, at).shape == (len(at), 33)

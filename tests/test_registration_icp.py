@@ -15,11 +15,11 @@ from coindie.registration import (
     translation_error_mm,
 )
 from coindie.registration.base import Estimate
-from coindie.registration.clouds import Cloud, transform_points
-from coindie.registration.metrics import inverse
+from coindie.registration.clouds import Cloud
 from coindie.registration.patch_icp import _patch
 from coindie.registration.quality import alignment, robust_score
-from synthetic_pairs import CoinPair, make_coin_pair, rigid_transform
+from coindie.transforms import euler_rigid, inverse, transform_points
+from synthetic_pairs import CoinPair, make_coin_pair
 
 # Linear algebra under test (ICP (Kabsch SVD per iteration) and the error metrics):
 # make test reruns this module under other OpenBLAS kernels.
@@ -39,7 +39,7 @@ def icp(pair: CoinPair, T_init: np.ndarray, **options):
 
 @pytest.mark.parametrize("start", [((0, 0, 8), (0.3, -0.2, 0.1)), ((2, -1, -5), (-0.4, 0.2, 0.0))])
 def test_icp_converges_from_a_nearby_start(level_pair: CoinPair, start) -> None:
-    outcome = icp(level_pair, rigid_transform(*start))
+    outcome = icp(level_pair, euler_rigid(*start))
     assert outcome.converged
     assert rotation_error_deg(np.eye(4), outcome.T_target_source) < 0.2
     assert translation_error_mm(np.eye(4), outcome.T_target_source) < 0.02
@@ -47,9 +47,9 @@ def test_icp_converges_from_a_nearby_start(level_pair: CoinPair, start) -> None:
 
 def test_icp_works_far_from_the_origin(level_pair: CoinPair) -> None:
     """The step is linearised about the pairs' centroid, not the origin: a coin 1 m away converges too."""
-    away = rigid_transform((0, 0, 0), (1000.0, -500.0, 200.0))
+    away = euler_rigid((0, 0, 0), (1000.0, -500.0, 200.0))
     pair = CoinPair(level_pair.source.transformed(away), level_pair.target.transformed(away), np.eye(4))
-    start = away @ rigid_transform((1, 0, 6), (0.2, 0.1, 0.0)) @ inverse(away)  # 6° about the coin itself
+    start = away @ euler_rigid((1, 0, 6), (0.2, 0.1, 0.0)) @ inverse(away)  # 6° about the coin itself
     outcome = icp(pair, start)
     assert outcome.converged
     points = pair.source.points
@@ -58,20 +58,20 @@ def test_icp_works_far_from_the_origin(level_pair: CoinPair) -> None:
 
 
 def test_icp_stops_after_max_iterations_and_says_it_did_not_converge(level_pair: CoinPair) -> None:
-    outcome = icp(level_pair, rigid_transform((0, 0, 8), (0.3, 0, 0)), max_iterations=2, tolerance=0.0)
+    outcome = icp(level_pair, euler_rigid((0, 0, 8), (0.3, 0, 0)), max_iterations=2, tolerance=0.0)
     assert outcome.iterations == 2
     assert not outcome.converged
 
 
 def test_icp_without_pairs_stops_at_once(level_pair: CoinPair) -> None:
-    outcome = icp(level_pair, rigid_transform((0, 0, 0), (50.0, 0, 0)))
+    outcome = icp(level_pair, euler_rigid((0, 0, 0), (50.0, 0, 0)))
     assert outcome.n_correspondences == 0
     assert not outcome.converged
 
 
 def test_patch_refinement_improves_a_coarse_estimate(level_pair: CoinPair) -> None:
     source, target = Cloud.of(level_pair.source), Cloud.of(level_pair.target)
-    coarse = rigid_transform((0.3, -0.2, 0.5), (0.04, -0.03, 0.02))
+    coarse = euler_rigid((0.3, -0.2, 0.5), (0.04, -0.03, 0.02))
     rng = np.random.default_rng(0)
     centres = source.points[rng.choice(len(source.points), 150, replace=False)]
     inliers = Matches(centres, centres)  # the truth is the identity
@@ -116,7 +116,7 @@ def test_the_residual_tells_a_wrong_turn_from_the_right_pose_when_fitness_cannot
 ) -> None:
     """The scoring trap: a dome turned the wrong way still overlaps almost everywhere."""
     source, target = level_pair.source.points, Cloud.of(level_pair.target)
-    wrong = rigid_transform((0, 0, 40), (0, 0, 0))
+    wrong = euler_rigid((0, 0, 40), (0, 0, 0))
     right_fit, wrong_fit = alignment(source, target, np.eye(4), 0.3), alignment(source, target, wrong, 0.3)
     assert wrong_fit.fitness > 0.8 * right_fit.fitness
     assert wrong_fit.residual > 3 * right_fit.residual
@@ -135,7 +135,7 @@ def test_alignment_figures_of_a_cloud_on_itself() -> None:
 def test_sre_of_a_pure_translation_follows_the_paper_formula() -> None:
     rng = np.random.default_rng(0)
     x = rng.normal(size=(500, 3)) * 5
-    T_true = rigid_transform((10, 20, 30), (1, 2, 3))
+    T_true = euler_rigid((10, 20, 30), (1, 2, 3))
     shift = np.array([0.1, 0.0, 0.0])
     T_est = T_true.copy()
     T_est[:3, 3] += shift
@@ -145,8 +145,8 @@ def test_sre_of_a_pure_translation_follows_the_paper_formula() -> None:
 
 
 def test_rotation_and_translation_errors() -> None:
-    T = rigid_transform((0, 0, 30), (1, 2, 3))
-    U = rigid_transform((0, 0, 37), (1, 2, 3.5))
+    T = euler_rigid((0, 0, 30), (1, 2, 3))
+    U = euler_rigid((0, 0, 37), (1, 2, 3.5))
     assert rotation_error_deg(T, U) == pytest.approx(7.0)
     assert translation_error_mm(T, U) == pytest.approx(0.5)
     np.testing.assert_allclose(inverse(T) @ T, np.eye(4), atol=1e-12)

@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 import pytest
 
@@ -16,7 +14,7 @@ from coindie.registration import (
     method_info,
     register_method,
 )
-from coindie.registration.params import Param
+from test_params import outside_values
 
 
 def test_the_message_names_the_parameter_the_part_the_range_and_the_value() -> None:
@@ -43,25 +41,6 @@ def test_choices_and_kinds_in_messages() -> None:
     with pytest.raises(ParameterError, match="Got inf"):
         PointToPlaneICP(max_iterations=float("inf"))
     assert isinstance(TeaserSolver(noise_bound=1).noise_bound, float)
-
-
-def outside_values(p: Param) -> list[object]:
-    """Values the declaration must refuse: just outside each finite bound, NaN, and the wrong kind."""
-    if p.choices is not None:
-        return ["no-such-choice", 1]
-    if p.kind is bool:
-        return ["yes", 1]
-    if p.kind is str:  # any text is a string (a path, say): what is refused is another kind
-        return [1, float("nan")]
-    values: list[object] = ["text", float("nan")]
-    step = 1 if p.kind is int else 1e-9
-    if math.isfinite(p.low):
-        values.append(p.low if p.low_open else p.low - step)
-    if math.isfinite(p.high):
-        values.append(p.high if p.high_open else p.high + step)
-    else:
-        values.append(float("inf"))
-    return values
 
 
 CASES = [

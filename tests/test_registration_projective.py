@@ -7,7 +7,7 @@ import pytest
 
 from coindie.registration.clouds import Cloud
 from coindie.registration.projective import ProjectedCloud
-from synthetic_pairs import rigid_transform
+from coindie.transforms import euler_rigid
 
 # Linear algebra under test (projective look-ups after rigid transforms):
 # make test reruns this module under other OpenBLAS kernels.
@@ -24,7 +24,7 @@ def _tilted_relief(seed: int) -> tuple[Cloud, np.ndarray]:
         [-0.2 * np.cos(x) * np.cos(0.7 * y), 0.14 * np.sin(x) * np.sin(0.7 * y), np.ones_like(x)]
     )
     normals = (normals / np.linalg.norm(normals, axis=-1, keepdims=True)).reshape(-1, 3)
-    T_cloud_plane = rigid_transform((10, -5, 30), (3.0, -1.0, 2.0))
+    T_cloud_plane = euler_rigid((10, -5, 30), (3.0, -1.0, 2.0))
     moved = points @ T_cloud_plane[:3, :3].T + T_cloud_plane[:3, 3]
     return Cloud(moved, normals @ T_cloud_plane[:3, :3].T), np.linalg.inv(T_cloud_plane)
 

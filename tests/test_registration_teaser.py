@@ -9,9 +9,8 @@ import pytest
 
 from coindie.registration import Matches, TeaserSolver, rotation_error_deg, translation_error_mm
 from coindie.registration.clique import consistency_graph, core_numbers, maximum_clique
-from coindie.registration.metrics import inverse
 from coindie.registration.teaser import adaptive_voting, gnc_tls_rotation
-from synthetic_pairs import random_pose
+from coindie.transforms import inverse, random_pose
 
 # Linear algebra under test (TEASER's rotation (GNC-TLS, SVD) and translation):
 # make test reruns this module under other OpenBLAS kernels.

@@ -173,7 +173,9 @@ def test_bad_presets_are_refused():
             get_preset("tiny", scale)
     with pytest.raises(ParameterError, match="n_dies"):
         DieGroup(OBVERSE, 5, 3, (CLUSTER_TEST,))
-    with pytest.raises(ParameterError, match="unknown split"):
+    with pytest.raises(
+        ParameterError, match=r"The 'splits' parameter of DieGroup must be .* Got \('holdout',\)\."
+    ):
         DieGroup(OBVERSE, 1, 3, ("holdout",))
 
 

@@ -11,6 +11,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 from enum import StrEnum
+from pathlib import PurePath
 
 _COIN_ID = re.compile(r"^L(?P<number>\d+)(?P<face>[DR])$", re.IGNORECASE)
 
@@ -72,3 +73,8 @@ def parse_face_id(text: str) -> FaceId:
     coin = int(match["number"])
     face = Face(match["face"].upper())
     return FaceId(key=canonical_face_id(coin, face), coin=coin, face=face, name=name)
+
+
+def face_id_of(path: PurePath) -> FaceId:
+    """The face id a scan file names: ``L0082D.ply`` -> ``L0082D``."""
+    return parse_face_id(path.stem)

@@ -17,9 +17,9 @@ from scipy import ndimage
 from coindie.errors import InvalidScanError, ParameterError
 from coindie.preprocess.canonical import CanonicalFrame, canonical_frame
 from coindie.preprocess.defaults import FILL_MAX_DISTANCE_MM, HEIGHTMAP_RESOLUTION_MM
-from coindie.preprocess.frames import apply
 from coindie.preprocess.heightmap import HeightMap, height_map
 from coindie.scan import Scan
+from coindie.transforms import apply
 
 Tone = Literal["bronze", "grey"]
 

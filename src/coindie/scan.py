@@ -8,10 +8,9 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import NDArray
 
+from coindie.arrays import FloatArray
 from coindie.errors import InvalidScanError
 from coindie.ids import Face, FaceId, parse_face_id
-
-FloatArray = NDArray[np.float64]
 
 #: A normal shorter than this is treated as missing (zero-length normals are bad input).
 MIN_NORMAL_LENGTH = 1e-8

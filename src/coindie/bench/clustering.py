@@ -36,17 +36,18 @@ import numpy as np
 from coindie.clustering import (
     METHODS,
     PAPER_THRESHOLD,
+    ConnectedComponents,
     ProbabilityGraph,
     ThresholdChoice,
-    cluster,
     evaluate,
+    get_algorithm,
     select_threshold,
     select_threshold_unsupervised,
     write_clusters,
     write_graph,
 )
-from coindie.errors import ParameterError
 from coindie.io.truth import FaceTruth, HoardTruth, load_truth
+from coindie.params import Configurable, param
 from coindie.project.backends import Backend, make_backend
 from coindie.similarity import PairScore, SameDieClassifier
 from coindie.similarity.batch import BatchConfig, PairTask, measure_pairs
@@ -60,18 +61,26 @@ SPLITS = ("cluster_val", "cluster_test")
 
 
 @dataclass(frozen=True)
-class BenchOptions:
-    method: str = "relief"
+class BenchOptions(Configurable):
+    method: str = param("relief", doc="the registration method (coindie methods)")
     params: tuple[tuple[str, Any], ...] = ()
     model: Path | None = None  # a trained classifier; None: train one on the training split
-    max_faces: int | None = None  # per group and split
-    train_pairs: int = 2000
-    train_faces: int = 200
-    methods: tuple[str, ...] = METHODS
-    groups: tuple[str, ...] = tuple(GROUPS)
-    workers: int = 1
-    dask: str | None = None  # a Dask scheduler's address or "local": the pairs are measured there
-    seed: int = 0
+    max_faces: int | None = param(
+        None, int, doc="at most this many faces per group and split", low=1, optional=True
+    )
+    train_pairs: int = param(2000, doc="training pairs when training the classifier", low=1)
+    train_faces: int = param(200, doc="faces the training pairs are drawn among", low=1)
+    methods: tuple[str, ...] = param(
+        METHODS, doc="the clustering algorithms compared", item=str, choices=METHODS
+    )
+    groups: tuple[str, ...] = param(
+        tuple(GROUPS), doc="the groups of the paper's Table 3", item=str, choices=tuple(GROUPS)
+    )
+    workers: int = param(1, doc="worker processes", low=1)
+    dask: str | None = param(
+        None, str, doc="a Dask scheduler's address or 'local': the pairs are measured there", optional=True
+    )
+    seed: int = param(0, doc="seed of the face and pair samples", low=0)
 
 
 def benchmark_clustering(
@@ -82,9 +91,6 @@ def benchmark_clustering(
 ) -> dict[str, Any]:
     """Run the benchmark (resuming ``out/pairs.csv``), write every output, return the summary."""
     options = options or BenchOptions()
-    unknown = set(options.groups) - set(GROUPS)
-    if unknown or set(options.methods) - set(METHODS):
-        raise ParameterError(f"groups must be among {list(GROUPS)} and methods among {list(METHODS)}")
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     truth = load_truth(data)
@@ -206,7 +212,7 @@ def summarize(
             ):
                 if tau is None:
                     continue
-                result = evaluate(cluster(test, method, tau).labels, truth)
+                result = evaluate(get_algorithm(method, threshold=tau).fit(test).clustering_.labels, truth)
                 rows[label] = {"threshold": tau, **result.scores(), "mistakes": len(result.mistakes)}
             rows["best_possible"] = _oracle(test, truth, method)
             entry["methods"][method] = rows
@@ -237,7 +243,9 @@ def _oracle(test: ProbabilityGraph, truth: dict[str, str], method: str) -> dict[
     best = select_threshold(test, truth, method)
     return {
         "threshold": best.threshold,
-        **evaluate(cluster(test, method, best.threshold).labels, truth).scores(),
+        **evaluate(
+            get_algorithm(method, threshold=best.threshold).fit(test).clustering_.labels, truth
+        ).scores(),
     }
 
 
@@ -357,7 +365,8 @@ def _write_clusters(
         rows = entry["methods"].get("components", {})
         tau = rows.get("validation", rows.get("paper", {})).get("threshold", PAPER_THRESHOLD)
         write_clusters(
-            cluster(graphs[("cluster_test", group)], "components", tau), out / f"clusters_{group}.csv"
+            ConnectedComponents(threshold=tau).fit(graphs[("cluster_test", group)]).clustering_,
+            out / f"clusters_{group}.csv",
         )
 
 

@@ -24,22 +24,23 @@ from __future__ import annotations
 import hashlib
 import json
 from dataclasses import asdict, dataclass
+from typing import ClassVar
 
 import numpy as np
 from numpy.typing import NDArray
 from scipy import fft, ndimage
 
+from coindie.arrays import FloatArray
 from coindie.errors import ParameterError
+from coindie.params import Configurable, Rule, param
 from coindie.scan import Scan
-
-FloatArray = NDArray[np.float64]
 
 #: Bumped whenever the descriptor's computation changes, so that cached descriptors are recomputed.
 DESCRIPTOR_VERSION = 1
 
 
 @dataclass(frozen=True)
-class DescriptorSettings:
+class DescriptorSettings(Configurable):
     """How the descriptor is computed (the relief image itself follows the ``relief`` method's defaults).
 
     Attributes:
@@ -50,21 +51,14 @@ class DescriptorSettings:
             outline of the flan does not dominate the spectrum.
     """
 
-    bands: int = 24
-    harmonics: int = 24
-    n_angles: int = 360
-    window_px: int = 3
+    RULES: ClassVar[tuple[Rule, ...]] = (
+        Rule(("harmonics", "n_angles"), lambda s: s.harmonics < s.n_angles // 2, "harmonics < n_angles / 2"),
+    )
 
-    def __post_init__(self) -> None:
-        for name in ("bands", "n_angles"):
-            if getattr(self, name) < 2:
-                raise ParameterError(f"The {name!r} setting of the descriptor must be >= 2.")
-        if not 0 <= self.harmonics < self.n_angles // 2:
-            raise ParameterError(
-                f"The 'harmonics' setting must be in [0, n_angles / 2). Got {self.harmonics}."
-            )
-        if self.window_px < 0:
-            raise ParameterError(f"The 'window_px' setting must be >= 0. Got {self.window_px}.")
+    bands: int = param(24, doc="log-spaced bands of spatial frequency", low=2)
+    harmonics: int = param(24, doc="angular harmonics kept per band", low=0)
+    n_angles: int = param(360, doc="samples of the polar spectrum over [0, pi)", low=2)
+    window_px: int = param(3, doc="fade to zero over this many pixels inside the footprint", unit="px", low=0)
 
     @property
     def size(self) -> int:

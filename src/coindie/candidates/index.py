@@ -11,9 +11,8 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import NDArray
 
+from coindie.arrays import IntArray
 from coindie.errors import ParameterError
-
-IntArray = NDArray[np.int64]
 
 #: Faces up to which the exact index is used.
 EXACT_BELOW = 20_000

@@ -1,7 +1,7 @@
 """What a candidate search keeps of the same-die pairs, on a hoard whose dies are known.
 
-Three figures per K, as ``/work/shared/notes/candidate-search.md`` asks (pair recall alone cannot reach
-99 % once a die has more than K + 1 faces, and clustering does not need it):
+Three figures per K (pair recall alone cannot reach 99 % once a die has more than K + 1 faces, and
+clustering does not need it):
 
 * ``pair_recall``: the share of all same-die pairs among the candidate pairs (for information);
 * ``face_recall``: the share of faces having a same-die partner that find one among their K candidates;
@@ -19,7 +19,8 @@ import numpy as np
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 
-from coindie.candidates.index import IntArray, candidate_pairs
+from coindie.arrays import IntArray
+from coindie.candidates.index import candidate_pairs
 
 
 @dataclass(frozen=True)

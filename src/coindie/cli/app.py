@@ -1,17 +1,18 @@
-"""The typer application and its top-level options."""
+"""The typer application: its top-level options, and every command module registered on it.
+
+The command modules import nothing of each other: each holds a ``commands`` Typer (and its groups), and
+``_register`` joins them here.
+"""
 
 from __future__ import annotations
 
 import importlib
 import sys
-from collections.abc import Callable
-from functools import wraps
-from typing import Annotated, ParamSpec, TypeVar
+from typing import Annotated
 
 import typer
 
 from coindie import __version__
-from coindie.errors import CoinDieError
 
 app = typer.Typer(
     name="coindie",
@@ -21,9 +22,6 @@ app = typer.Typer(
     pretty_exceptions_enable=False,
 )
 
-P = ParamSpec("P")
-R = TypeVar("R")
-
 #: Optional back-ends reported by ``coindie --version``: import name -> what it is used for.
 OPTIONAL_BACKENDS = {
     "open3d": "registration (ICP, FPFH, RANSAC)",
@@ -31,20 +29,6 @@ OPTIONAL_BACKENDS = {
     "dask.distributed": "scheduling pairs on a cluster",
     "faiss": "candidate search",
 }
-
-
-def exits_cleanly(command: Callable[P, R]) -> Callable[P, R]:
-    """Turn a ``CoinDieError`` into a one-line message on stderr and exit code 2."""
-
-    @wraps(command)
-    def wrapper(*args: P.args, **kwargs: P.kwargs) -> R:
-        try:
-            return command(*args, **kwargs)
-        except CoinDieError as error:
-            typer.echo(f"coindie: error: {error}", err=True)
-            raise typer.Exit(code=2) from None
-
-    return wrapper
 
 
 def backend_report() -> list[tuple[str, str, str]]:
@@ -84,15 +68,28 @@ def main() -> None:
     app()
 
 
-# Command groups register themselves on ``app`` when imported.
-from coindie.cli import bench as _bench  # noqa: E402,F401
-from coindie.cli import cluster as _cluster  # noqa: E402,F401
-from coindie.cli import demo as _demo  # noqa: E402,F401
-from coindie.cli import numismatics as _numismatics  # noqa: E402,F401
-from coindie.cli import project as _project  # noqa: E402,F401
-from coindie.cli import registration as _registration  # noqa: E402,F401
-from coindie.cli import scans as _scans  # noqa: E402,F401
-from coindie.cli import serve as _serve  # noqa: E402,F401
-from coindie.cli import similarity as _similarity  # noqa: E402,F401
-from coindie.cli import synth as _synth  # noqa: E402,F401
-from coindie.cli import train as _train  # noqa: E402,F401
+def _register() -> None:
+    """Every command, in the order of ``coindie --help``; groups after the top-level commands."""
+    from coindie.cli import (
+        bench,
+        cluster,
+        demo,
+        numismatics,
+        project,
+        registration,
+        scans,
+        serve,
+        similarity,
+        synth,
+        train,
+    )
+
+    for module in (cluster, demo, numismatics, project, registration, scans, serve, synth):
+        app.add_typer(module.commands)
+    train.train.add_typer(similarity.commands)
+    app.add_typer(bench.bench, name="bench")
+    app.add_typer(numismatics.export, name="export")
+    app.add_typer(train.train, name="train")
+
+
+_register()

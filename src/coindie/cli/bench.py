@@ -7,12 +7,10 @@ from typing import Annotated
 
 import typer
 
-from coindie.cli.app import app, exits_cleanly
-from coindie.cli.options import Dask
+from coindie.cli.common import Dask, exits_cleanly
 from coindie.errors import ParameterError
 
 bench = typer.Typer(help="Benchmarks that reproduce the paper's tables.", no_args_is_help=True)
-app.add_typer(bench, name="bench")
 
 
 @bench.command("registration")

@@ -8,11 +8,14 @@ from typing import Annotated
 
 import typer
 
-from coindie.cli.app import app, exits_cleanly
+from coindie.cli.common import exits_cleanly
 from coindie.errors import ParameterError
 
+#: The commands of this module; coindie.cli.app registers them.
+commands = typer.Typer()
 
-@app.command("cluster")
+
+@commands.command("cluster")
 @exits_cleanly
 def cluster_command(
     source: Annotated[
@@ -38,7 +41,12 @@ def cluster_command(
     as_json: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
 ) -> None:
     """Cluster faces into dies: threshold the same-die probabilities, then group."""
-    from coindie.clustering import PAPER_THRESHOLD, cluster, select_threshold_unsupervised, write_clusters
+    from coindie.clustering import (
+        PAPER_THRESHOLD,
+        get_algorithm,
+        select_threshold_unsupervised,
+        write_clusters,
+    )
 
     if threshold is not None and auto:
         raise ParameterError("give --threshold or --auto, not both")
@@ -55,7 +63,7 @@ def cluster_command(
         how = "given" if threshold is not None else "the paper's"
     corrections = _corrections(source, graph)
     if corrections is None:
-        clusters = cluster(graph, method, tau)
+        clusters = get_algorithm(method, threshold=tau).fit(graph).clustering_
     else:  # the experts' edits (coindie serve), replayed by the same function as the browser's
         from coindie.clustering.corrections import corrected_clusters
 
@@ -100,7 +108,7 @@ def _corrections(source: Path, graph):  # noqa: ANN001, ANN202
         log.close()
 
 
-@app.command("eval")
+@commands.command("eval")
 @exits_cleanly
 def eval_command(
     clusters: Annotated[Path, typer.Argument(help="Cluster CSV (name, die) to judge.")],

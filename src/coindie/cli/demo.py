@@ -14,14 +14,17 @@ from typing import Annotated
 
 import typer
 
-from coindie.cli.app import app, exits_cleanly
+from coindie.cli.common import exits_cleanly
 from coindie.errors import ParameterError
+
+#: The commands of this module; coindie.cli.app registers them.
+commands = typer.Typer()
 
 #: Candidates per face in the demo (a small hoard: recall is ~99 % of faces at K = 10, BENCHMARK.md).
 DEMO_K = 10
 
 
-@app.command()
+@commands.command()
 @exits_cleanly
 def demo(
     out: Annotated[Path, typer.Argument(help="Folder for the hoard, the project and the clusters (reused).")],
@@ -82,7 +85,7 @@ def demo(
 def cluster_and_evaluate(project, out: Path, method: str) -> list[str]:  # noqa: ANN001 (Project)
     """Per side: the unsupervised threshold, the clusters (written to ``out/clusters_<side>.csv``) and,
     when the project has labels, FMI / ARI and clusters vs dies; one line per side."""
-    from coindie.clustering import cluster, evaluate, write_clusters
+    from coindie.clustering import evaluate, get_algorithm, write_clusters
 
     labels = project.labels()
     lines = []
@@ -91,7 +94,7 @@ def cluster_and_evaluate(project, out: Path, method: str) -> list[str]:  # noqa:
         if graph.n_nodes < 3:
             continue
         tau, how = project.auto_threshold(side, method)
-        clusters = cluster(graph, method, tau)
+        clusters = get_algorithm(method, threshold=tau).fit(graph).clustering_
         path = write_clusters(clusters, out / f"clusters_{side}.csv")
         line = f"{name}: {graph.n_nodes} faces, {clusters.n_clusters} clusters at threshold {tau:g} ({how})"
         truth = {face: die for face, die in labels.items() if face in clusters.labels}

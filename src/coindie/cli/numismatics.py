@@ -9,11 +9,13 @@ from typing import Annotated
 
 import typer
 
-from coindie.cli.app import app, exits_cleanly
+from coindie.cli.common import exits_cleanly
 from coindie.errors import ParameterError
 
+#: The commands of this module; coindie.cli.app registers them.
+commands = typer.Typer()
+
 export = typer.Typer(help="Export a project's results (aligned models per die).", no_args_is_help=True)
-app.add_typer(export, name="export")
 
 ThresholdOption = Annotated[
     float | None, typer.Option(help="For a project: links above it join faces (default: the paper's 0.95).")
@@ -32,7 +34,7 @@ def _fmt(value: float | None) -> str:
     return "inf" if value == float("inf") else f"{value:.1f}"
 
 
-@app.command("estimate")
+@commands.command("estimate")
 @exits_cleanly
 def estimate_command(
     source: Annotated[
@@ -73,7 +75,7 @@ def estimate_command(
         console.print(table)
 
 
-@app.command("dielinks")
+@commands.command("dielinks")
 @exits_cleanly
 def dielinks_command(
     obverse: Annotated[
@@ -120,7 +122,7 @@ def dielinks_command(
         typer.echo(f"  {path}")
 
 
-@app.command("report")
+@commands.command("report")
 @exits_cleanly
 def report_command(
     project: Annotated[Path, typer.Argument(help="A die-study project (coindie init / run).")],

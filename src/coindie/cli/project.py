@@ -7,11 +7,13 @@ from typing import Annotated
 
 import typer
 
-from coindie.cli.app import app, exits_cleanly
-from coindie.cli.options import Dask
+from coindie.cli.common import Dask, exits_cleanly
+
+#: The commands of this module; coindie.cli.app registers them.
+commands = typer.Typer()
 
 
-@app.command("init")
+@commands.command("init")
 @exits_cleanly
 def init(
     project: Annotated[
@@ -35,7 +37,7 @@ def init(
         typer.echo(f"skipped: {skipped}")
 
 
-@app.command("run")
+@commands.command("run")
 @exits_cleanly
 def run(
     project: Annotated[Path, typer.Argument(help="Project folder made by coindie init.")],
@@ -99,7 +101,7 @@ def run(
         typer.echo(line)
 
 
-@app.command("status")
+@commands.command("status")
 @exits_cleanly
 def status(
     project: Annotated[Path, typer.Argument(help="Project folder.")],

@@ -9,18 +9,21 @@ from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
-from coindie.cli.app import app, exits_cleanly
+from coindie.cli.common import exits_cleanly
 from coindie.errors import ParameterError
 
 if TYPE_CHECKING:
     from coindie.registration.base import MethodInfo, RegistrationResult
     from coindie.scan import Scan
 
+#: The commands of this module; coindie.cli.app registers them.
+commands = typer.Typer()
+
 #: Exit code of ``coindie register`` when the registration ran but its result is not valid.
 EXIT_INVALID = 1
 
 
-@app.command("register")
+@commands.command("register")
 @exits_cleanly
 def register(
     source: Annotated[Path, typer.Argument(help="Source scan (PLY, STL, OBJ): the one that is moved.")],
@@ -102,7 +105,7 @@ def _text(result: RegistrationResult, source: Scan, target: Scan) -> str:
     return "\n".join(lines)
 
 
-@app.command("methods")
+@commands.command("methods")
 @exits_cleanly
 def methods(
     name: Annotated[str | None, typer.Argument(help="Show only this method.")] = None,

@@ -11,17 +11,20 @@ from typing import TYPE_CHECKING, Annotated, Literal
 
 import typer
 
-from coindie.cli.app import app, exits_cleanly
+from coindie.cli.common import exits_cleanly
 
 if TYPE_CHECKING:
     from coindie.preprocess.summary import ScanSummary
+
+#: The commands of this module; coindie.cli.app registers them.
+commands = typer.Typer()
 
 ScanArgument = Annotated[
     Path, typer.Argument(help="A scan file (.ply point cloud or mesh, .stl, .obj).", show_default=False)
 ]
 
 
-@app.command()
+@commands.command()
 @exits_cleanly
 def info(
     scan: ScanArgument,
@@ -41,7 +44,7 @@ def info(
         typer.echo(_as_text(summary))
 
 
-@app.command()
+@commands.command()
 @exits_cleanly
 def render(
     scan: ScanArgument,

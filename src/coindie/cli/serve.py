@@ -7,10 +7,13 @@ from typing import Annotated
 
 import typer
 
-from coindie.cli.app import app, exits_cleanly
+from coindie.cli.common import exits_cleanly
+
+#: The commands of this module; coindie.cli.app registers them.
+commands = typer.Typer()
 
 
-@app.command("serve")
+@commands.command("serve")
 @exits_cleanly
 def serve_command(
     source: Annotated[

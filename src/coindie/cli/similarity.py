@@ -8,13 +8,14 @@ from typing import Annotated
 
 import typer
 
-from coindie.cli.app import exits_cleanly
-from coindie.cli.options import Dask
-from coindie.cli.train import train
+from coindie.cli.common import Dask, exits_cleanly
 from coindie.errors import ParameterError
 
+#: The commands of this module; coindie.cli.app registers them.
+commands = typer.Typer()
 
-@train.command("similarity")
+
+@commands.command("similarity")
 @exits_cleanly
 def similarity(
     data: Annotated[

@@ -9,12 +9,14 @@ from typing import Annotated
 
 import typer
 
-from coindie.cli.app import app, exits_cleanly
-from coindie.cli.options import Dask
+from coindie.cli.common import Dask, exits_cleanly
 from coindie.errors import ParameterError
 
+#: The commands of this module; coindie.cli.app registers them.
+commands = typer.Typer()
 
-@app.command("synth")
+
+@commands.command("synth")
 @exits_cleanly
 def synth(
     out: Annotated[

@@ -7,14 +7,13 @@ from typing import Annotated, Any
 
 import typer
 
-from coindie.cli.app import app, exits_cleanly
+from coindie.cli.common import exits_cleanly
 from coindie.errors import ParameterError
 
 train = typer.Typer(
     help="Train the learned models (FCGF, DIP descriptors) on a hoard with known transforms.",
     no_args_is_help=True,
 )
-app.add_typer(train, name="train")
 
 
 # Options shared by both networks (the paper's training settings as defaults).

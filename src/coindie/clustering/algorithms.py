@@ -1,4 +1,10 @@
-"""Die clusters from a probability graph, by one of three methods behind one call.
+"""Die clusters from a probability graph: three clustering algorithms with one estimator shape.
+
+Each algorithm is a :class:`ClusteringAlgorithm` (scikit-learn's shape): its parameters are declared
+through :mod:`coindie.params` and stored on construction, ``fit(graph)`` returns the estimator, with
+``labels_`` (one label per node of the graph, in its node order) and ``clustering_`` (face id -> label).
+They are registered by name (:func:`get_algorithm`, :func:`list_algorithms`); :func:`cluster` is the
+one-call shortcut.
 
 - ``components`` (the paper's, section 3.3): keep the links whose probability is above ``threshold`` (the
   authors' viewer keeps ``weight > threshold``); clusters are the connected components. One wrong link
@@ -19,17 +25,17 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
+from typing import TYPE_CHECKING, Any, ClassVar, Self
 
 import numpy as np
 from numpy.typing import NDArray
 
+from coindie.arrays import IntArray
 from coindie.clustering.graph import ProbabilityGraph
 from coindie.errors import ParameterError
 from coindie.ids import parse_face_id
+from coindie.params import Configurable, Param, param
 
-IntArray = NDArray[np.int64]
-
-METHODS = ("components", "average", "leiden")
 #: The threshold the paper found best on its validation split (obverses without beard).
 PAPER_THRESHOLD = 0.95
 
@@ -54,6 +60,114 @@ class Clustering:
         return sorted(groups.values(), key=lambda g: (-len(g), g[0]))
 
 
+@dataclass(frozen=True, kw_only=True)
+class ClusteringAlgorithm(Configurable):
+    """Base of the clustering algorithms: declared parameters, ``fit(graph)`` -> self, ``labels_``.
+
+    A subclass sets ``NAME`` (its registry name) and implements ``_raw_labels`` (any integer labels of the
+    nodes of a non-empty graph); the base relabels them 0, 1, ... in order of first appearance.
+    """
+
+    NAME: ClassVar[str] = "clustering"
+
+    threshold: float = param(
+        PAPER_THRESHOLD, doc="links with a probability above it count", low=0.0, high=1.0
+    )
+
+    if TYPE_CHECKING:  # set by fit, not parameters (not dataclass fields)
+        labels_: IntArray
+        clustering_: Clustering
+
+    def fit(self, graph: ProbabilityGraph) -> Self:
+        """Cluster the faces of ``graph``; sets ``labels_`` (graph node order) and ``clustering_``."""
+        raw = self._raw_labels(graph) if graph.n_nodes else np.zeros(0, dtype=np.int64)
+        labels = np.asarray(_relabelled(raw), dtype=np.int64)
+        # The parameters are frozen; what fit learns is set beside them, as scikit-learn's trailing "_".
+        object.__setattr__(self, "labels_", labels)
+        mapping = dict(zip(graph.nodes, labels.tolist(), strict=True))
+        object.__setattr__(self, "clustering_", Clustering(mapping, self.NAME, self.threshold))
+        return self
+
+    def _raw_labels(self, graph: ProbabilityGraph) -> IntArray:
+        raise NotImplementedError
+
+
+_ALGORITHMS: dict[str, type[ClusteringAlgorithm]] = {}
+
+
+def register_algorithm(algorithm: type[ClusteringAlgorithm]) -> type[ClusteringAlgorithm]:
+    """Register a clustering algorithm under its ``NAME`` (usable as a class decorator)."""
+    if algorithm.NAME in _ALGORITHMS:
+        raise ValueError(f"a clustering algorithm is already registered as {algorithm.NAME!r}")
+    _ALGORITHMS[algorithm.NAME] = algorithm
+    return algorithm
+
+
+def list_algorithms() -> list[str]:
+    """The names of the registered clustering algorithms, in registration order."""
+    return list(_ALGORITHMS)
+
+
+def algorithm_class(name: str) -> type[ClusteringAlgorithm]:
+    """The class registered as ``name`` (a ParameterError lists the known names)."""
+    Param(str, "components", "the clustering algorithm", choices=tuple(_ALGORITHMS)).check(
+        "cluster", "method", name
+    )
+    return _ALGORITHMS[name]
+
+
+def get_algorithm(name: str, **params: Any) -> ClusteringAlgorithm:
+    """The algorithm registered as ``name``, built with ``params`` (checked by their declarations)."""
+    algorithm = algorithm_class(name)
+    unknown = set(params) - set(algorithm.declared())
+    if unknown:
+        raise ParameterError(
+            f"The clustering algorithm {name!r} has no parameter {sorted(unknown)[0]!r}. "
+            f"Its parameters: {', '.join(algorithm.declared())}."
+        )
+    return algorithm(**params)
+
+
+@register_algorithm
+@dataclass(frozen=True, kw_only=True)
+class ConnectedComponents(ClusteringAlgorithm):
+    """The paper's: the connected components of the links above the threshold."""
+
+    NAME: ClassVar[str] = "components"
+
+    def _raw_labels(self, graph: ProbabilityGraph) -> IntArray:
+        return _components(graph, self.threshold)
+
+
+@register_algorithm
+@dataclass(frozen=True, kw_only=True)
+class AverageLinkage(ClusteringAlgorithm):
+    """Average-linkage agglomerative clustering on ``1 - p``, cut at ``1 - threshold``."""
+
+    NAME: ClassVar[str] = "average"
+
+    def _raw_labels(self, graph: ProbabilityGraph) -> IntArray:
+        return _average_linkage(graph, self.threshold)
+
+
+@register_algorithm
+@dataclass(frozen=True, kw_only=True)
+class Leiden(ClusteringAlgorithm):
+    """Leiden communities (modularity with a resolution) of the links above the threshold."""
+
+    NAME: ClassVar[str] = "leiden"
+
+    resolution: float = param(1.0, doc="modularity resolution (higher: more, smaller clusters)", low=0.0)
+    seed: int = param(0, doc="Leiden's random seed", low=0)
+
+    def _raw_labels(self, graph: ProbabilityGraph) -> IntArray:
+        return _leiden(graph, self.threshold, self.resolution, self.seed)
+
+
+#: The registered algorithms' names.
+METHODS = tuple(list_algorithms())
+
+
 def cluster(
     graph: ProbabilityGraph,
     method: str = "components",
@@ -62,7 +176,7 @@ def cluster(
     resolution: float = 1.0,
     seed: int = 0,
 ) -> Clustering:
-    """Cluster the faces of ``graph`` into dies.
+    """Cluster the faces of ``graph`` into dies: ``get_algorithm(method, ...).fit(graph).clustering_``.
 
     Args:
         method: ``components``, ``average`` or ``leiden`` (see the module's docstring).
@@ -71,19 +185,8 @@ def cluster(
         resolution: Leiden's modularity resolution (higher: more, smaller clusters).
         seed: Leiden's random seed.
     """
-    if method not in METHODS:
-        raise ParameterError(f"The clustering method must be one of {', '.join(METHODS)}. Got {method!r}.")
-    if not (isinstance(threshold, int | float) and 0.0 <= threshold <= 1.0):
-        raise ParameterError(f"The clustering threshold must be in [0, 1]. Got {threshold!r}.")
-    if graph.n_nodes == 0:
-        return Clustering({}, method, float(threshold))
-    if method == "components":
-        raw = _components(graph, threshold)
-    elif method == "average":
-        raw = _average_linkage(graph, threshold)
-    else:
-        raw = _leiden(graph, threshold, resolution, seed)
-    return Clustering(dict(zip(graph.nodes, _relabelled(raw), strict=True)), method, float(threshold))
+    extra = {"resolution": resolution, "seed": seed} if method == Leiden.NAME else {}
+    return get_algorithm(method, threshold=threshold, **extra).fit(graph).clustering_
 
 
 def _components(graph: ProbabilityGraph, threshold: float) -> IntArray:
@@ -184,9 +287,17 @@ def clusters_from_labels(labels: Mapping[str, object], faces: Iterable[str] | No
 __all__ = [
     "METHODS",
     "PAPER_THRESHOLD",
+    "AverageLinkage",
     "Clustering",
+    "ClusteringAlgorithm",
+    "ConnectedComponents",
+    "Leiden",
+    "algorithm_class",
     "cluster",
     "clusters_from_labels",
+    "get_algorithm",
+    "list_algorithms",
     "read_clusters",
+    "register_algorithm",
     "write_clusters",
 ]

@@ -28,7 +28,7 @@ from typing import Any
 
 import numpy as np
 
-from coindie.clustering.algorithms import METHODS, Clustering, _relabelled, cluster
+from coindie.clustering.algorithms import Clustering, ConnectedComponents, _relabelled, get_algorithm
 from coindie.clustering.graph import ProbabilityGraph
 from coindie.errors import ParameterError
 from coindie.ids import parse_face_id
@@ -214,13 +214,11 @@ def corrected_clusters(
     ``components`` keeps the forced links at any τ (even 1); the other methods cluster the corrected
     graph (forced links at probability 1, cut ones at 0).
     """
-    if method not in METHODS:
-        raise ParameterError(f"The clustering method must be one of {', '.join(METHODS)}. Got {method!r}.")
-    if not (isinstance(threshold, int | float) and 0.0 <= threshold <= 1.0):
-        raise ParameterError(f"The clustering threshold must be in [0, 1]. Got {threshold!r}.")
+    algorithm = get_algorithm(method, threshold=threshold)  # the parameters checked by their declarations
     corrected = corrected_graph(graph, corrections)
-    if method != "components" or corrected.n_nodes == 0:
-        return cluster(corrected, method, threshold)
+    if method != ConnectedComponents.NAME or corrected.n_nodes == 0:
+        return algorithm.fit(corrected).clustering_
+    threshold = algorithm.threshold
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
 

@@ -19,13 +19,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-from numpy.typing import NDArray
 
+from coindie.arrays import FloatArray, IntArray
 from coindie.errors import CoinDieError
 from coindie.ids import parse_face_id
-
-FloatArray = NDArray[np.float64]
-IntArray = NDArray[np.int64]
 
 
 class GraphError(CoinDieError, ValueError):

@@ -19,12 +19,11 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from coindie.clustering.algorithms import cluster
+from coindie.arrays import FloatArray
+from coindie.clustering.algorithms import get_algorithm
 from coindie.clustering.evaluation import evaluate
 from coindie.clustering.graph import ProbabilityGraph
 from coindie.errors import ParameterError
-
-FloatArray = NDArray[np.float64]
 
 
 def threshold_grid() -> FloatArray:
@@ -63,7 +62,7 @@ def select_threshold(
     grid = threshold_grid() if thresholds is None else np.asarray(thresholds, dtype=np.float64)
     scores, counts = [], []
     for tau in grid:
-        result = evaluate(cluster(graph, method, float(tau)).labels, truth)
+        result = evaluate(get_algorithm(method, threshold=float(tau)).fit(graph).clustering_.labels, truth)
         scores.append(getattr(result, metric))
         counts.append(result.n_clusters)
     return _best(grid, np.asarray(scores), np.asarray(counts), metric)
@@ -80,7 +79,7 @@ def select_threshold_unsupervised(
     np.fill_diagonal(distance, 0.0)
     scores, counts = [], []
     for tau in grid:
-        labels = np.array(list(cluster(graph, method, float(tau)).labels.values()))
+        labels = get_algorithm(method, threshold=float(tau)).fit(graph).labels_
         n = len(np.unique(labels))
         counts.append(n)
         valid = 2 <= n <= graph.n_nodes - 1

@@ -11,9 +11,9 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from coindie.errors import CoinDieError, ScanReadError
-from coindie.ids import FaceId, parse_face_id
+from coindie.ids import FaceId, face_id_of, parse_face_id
 from coindie.io.labels import Labels, read_labels
-from coindie.io.reader import MAX_SCAN_BYTES, face_id_of, is_scan_name, read_scan
+from coindie.io.reader import MAX_SCAN_BYTES, is_scan_name, read_scan
 from coindie.scan import Scan
 
 #: The label file used when ``open_dataset`` is given none.

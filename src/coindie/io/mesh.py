@@ -18,20 +18,17 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import NDArray
 
+from coindie.arrays import FloatArray
 from coindie.errors import InvalidScanError, ScanReadError
-from coindie.ids import FaceId
+from coindie.ids import FaceId, face_id_of
 from coindie.scan import Scan
 
 if TYPE_CHECKING:
     import trimesh
 
-FloatArray = NDArray[np.float64]
-
 
 def read_mesh(path: str | Path, face_id: FaceId | None = None) -> Scan:
     """Read an STL or OBJ mesh: vertices (duplicates merged) with area-weighted unit vertex normals."""
-    from coindie.io.reader import face_id_of
-
     path = Path(path)
     mesh = _load(path)
     if len(mesh.faces) == 0:

@@ -25,7 +25,7 @@ from plyfile import (
 )
 
 from coindie.errors import InvalidScanError, ParameterError, ScanReadError
-from coindie.ids import FaceId
+from coindie.ids import FaceId, face_id_of
 from coindie.scan import Scan, normal_colors
 
 #: The header must end within this many bytes (a guard against scanning a huge garbage file byte by byte).
@@ -51,8 +51,6 @@ def read_ply(path: str | Path, face_id: FaceId | None = None) -> Scan:
     area-weighted normal of its faces (vertices on no face of non-zero area are dropped, see
     ``coindie.io.mesh.mesh_scan``).
     """
-    from coindie.io.reader import face_id_of
-
     path = Path(path)
     header = _read_header(path)
     _check_vertex_element(header.ply, path)

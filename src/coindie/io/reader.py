@@ -6,7 +6,7 @@ import os
 from pathlib import Path
 
 from coindie.errors import ParameterError, ScanReadError
-from coindie.ids import FaceId, parse_face_id
+from coindie.ids import face_id_of
 from coindie.scan import Scan
 
 #: Largest scan file read by default (2 GiB); checked on the file size before any byte is read.
@@ -33,11 +33,6 @@ def read_scan(path: str | Path, *, max_bytes: int = MAX_SCAN_BYTES) -> Scan:
     from coindie.io.mesh import read_mesh  # imports trimesh (~0.5 s): only when a mesh is read
 
     return read_mesh(path, face_id)
-
-
-def face_id_of(path: Path) -> FaceId:
-    """The face id a scan file names: ``L0082D.ply`` -> ``L0082D``."""
-    return parse_face_id(path.stem)
 
 
 def is_scan_name(path: Path) -> bool:

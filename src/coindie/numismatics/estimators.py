@@ -48,6 +48,7 @@ from numpy.typing import NDArray
 from scipy.stats import norm
 
 from coindie.errors import ParameterError
+from coindie.params import Configurable, param
 
 #: Dies with at most this many coins are "rare" in ACE (Chao and Lee 1992; EstimateS' default).
 ACE_RARE_THRESHOLD = 10
@@ -72,20 +73,23 @@ class Estimate:
 
 
 @dataclass(frozen=True)
-class DieCounts:
+class DieCounts(Configurable):
     """The die frequencies of one side: n coins, d dies, d1 singletons, d2 doubletons."""
 
-    counts: tuple[int, ...]
+    counts: tuple[int, ...] = param(
+        kind=tuple,
+        doc="coins of each die (the estimators need at least one die)",
+        item=int,
+        low=1,
+        min_length=1,
+    )
     n: int = field(init=False)
     d: int = field(init=False)
     d1: int = field(init=False)
     d2: int = field(init=False)
 
     def __post_init__(self) -> None:
-        if not self.counts:
-            raise ParameterError("no dies: the estimators need at least one die with one coin")
-        if any(c < 1 for c in self.counts):
-            raise ParameterError(f"every die needs at least one coin; got counts {sorted(self.counts)[:5]}")
+        super().__post_init__()
         object.__setattr__(self, "n", int(sum(self.counts)))
         object.__setattr__(self, "d", len(self.counts))
         object.__setattr__(self, "d1", sum(1 for c in self.counts if c == 1))

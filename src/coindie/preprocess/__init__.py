@@ -5,7 +5,7 @@ normals if missing), configured by :class:`PreprocessConfig`. Later stages build
 :func:`canonical_frame` (best-fit plane at z = 0, face up) and :func:`height_map` (the relief as an image).
 
 Names are imported on first use (PEP 562) so that a command needing only the height map does not pay
-for pydantic and the k-d tree at start-up.
+for the k-d tree at start-up.
 """
 
 from __future__ import annotations

@@ -13,11 +13,12 @@ from typing import Literal
 import numpy as np
 from numpy.typing import ArrayLike
 
+from coindie.arrays import FloatArray
 from coindie.errors import ParameterError
 from coindie.preprocess.defaults import FIT_ITERATIONS, FIT_MAX_NORMAL_ANGLE_DEG, FIT_MAX_POINTS
-from coindie.preprocess.frames import FloatArray, apply, rigid, rotation_between
 from coindie.preprocess.orientation import pca_transform
 from coindie.scan import Scan
+from coindie.transforms import apply, rigid, rotation_between
 
 SurfaceModel = Literal["plane", "quadric"]
 

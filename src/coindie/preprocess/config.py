@@ -1,89 +1,93 @@
-"""The preprocessing parameters in one typed, validated model."""
+"""The preprocessing parameters in one typed, validated configuration."""
 
 from __future__ import annotations
 
+from dataclasses import dataclass, fields
 from typing import Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError
-
 from coindie.errors import ParameterError
+from coindie.params import Configurable, param
 from coindie.preprocess import defaults as d
 
 Orientation = Literal["pca", "canonical", "none"]
 GridMode = Literal["mean", "last"]
 SurfaceModel = Literal["plane", "quadric"]
+_SURFACES = ("plane", "quadric")
 
 
-class PreprocessConfig(BaseModel):
+def _positive_mm(default: float | None, doc: str, optional: bool = False) -> Any:
+    """A length in (0, inf) mm (or None when ``optional``)."""
+    return param(default, float, doc=doc, unit="mm", low=0.0, low_open=True, optional=optional)
+
+
+def _angle_deg(default: float, doc: str) -> Any:
+    """An angle in (0, 90] degrees."""
+    return param(default, float, doc=doc, unit="degrees", low=0.0, low_open=True, high=90.0)
+
+
+@dataclass(frozen=True, kw_only=True)
+class PreprocessConfig(Configurable):
     """Parameters of :func:`coindie.preprocess.preprocess` and of the canonical frame / height map.
 
     Defaults follow the Riedones3D paper where it gives a value (PCA orientation to +z, 0.1 mm grid).
-    Build with keywords (``PreprocessConfig(grid_size_mm=0.2)``) or, to get a ``ParameterError`` instead of
-    pydantic's ``ValidationError``, with :meth:`from_overrides`.
+    Build with keywords (``PreprocessConfig(grid_size_mm=0.2)``: a bad value raises ``ParameterError``) or
+    with :meth:`from_overrides`, which also refuses an unknown name with a ``ParameterError``.
     """
 
-    model_config = ConfigDict(extra="forbid", frozen=True)
-
-    orientation: Orientation = Field(
+    orientation: Orientation = param(
         "pca",
-        description="How the scan is turned face up: 'pca' (paper: smallest principal axis to +z), "
+        doc="How the scan is turned face up: 'pca' (paper: smallest principal axis to +z), "
         "'canonical' (robust best-fit plane to z=0, edge wall ignored), 'none' (only centred).",
+        choices=("pca", "canonical", "none"),
     )
-    grid_size_mm: float | None = Field(
-        d.GRID_SIZE_MM, gt=0, description="Grid-sampling cell edge (mm); None keeps every point."
+    grid_size_mm: float | None = _positive_mm(
+        d.GRID_SIZE_MM, "Grid-sampling cell edge; None keeps every point.", optional=True
     )
-    grid_mode: GridMode = Field(
-        "mean", description="'mean': one averaged point per cell; 'last': the cell's last input point."
+    grid_mode: GridMode = param(
+        "mean",
+        doc="'mean': one averaged point per cell; 'last': the cell's last input point.",
+        choices=("mean", "last"),
     )
-    normals_k: int = Field(d.NORMALS_K, ge=3, le=256, description="Neighbours per normal estimate (count).")
-    normals_radius_mm: float | None = Field(
-        d.NORMALS_RADIUS_MM,
-        gt=0,
-        description="Neighbours farther than this are ignored (mm); None: no limit.",
+    normals_k: int = param(d.NORMALS_K, doc="Neighbours per normal estimate (count).", low=3, high=256)
+    normals_radius_mm: float | None = _positive_mm(
+        d.NORMALS_RADIUS_MM, "Neighbours farther than this are ignored; None: no limit.", optional=True
     )
-    frame_model: SurfaceModel = Field(
-        "plane", description="Canonical frame from the best-fit 'plane' or the tangent plane of a 'quadric'."
+    frame_model: SurfaceModel = param(
+        "plane",
+        doc="Canonical frame from the best-fit 'plane' or the tangent plane of a 'quadric'.",
+        choices=_SURFACES,
     )
-    fit_max_normal_angle_deg: float = Field(
+    fit_max_normal_angle_deg: float = _angle_deg(
         d.FIT_MAX_NORMAL_ANGLE_DEG,
-        gt=0,
-        le=90,
-        description="Points whose normal is farther than this from up (degrees) are left out of the fit.",
+        "Points whose normal is farther than this from up are left out of the fit.",
     )
-    fit_iterations: int = Field(
-        d.FIT_ITERATIONS, ge=1, le=100, description="Reweighting iterations of the fit (count)."
+    fit_iterations: int = param(
+        d.FIT_ITERATIONS, doc="Reweighting iterations of the fit (count).", low=1, high=100
     )
-    heightmap_resolution_mm: float = Field(
-        d.HEIGHTMAP_RESOLUTION_MM, gt=0, description="Height-map pixel edge (mm)."
+    heightmap_resolution_mm: float = _positive_mm(d.HEIGHTMAP_RESOLUTION_MM, "Height-map pixel edge.")
+    detrend: SurfaceModel = param(
+        "quadric",
+        doc="Height-map values are heights above the best-fit 'plane' or 'quadric'.",
+        choices=_SURFACES,
     )
-    detrend: SurfaceModel = Field(
-        "quadric", description="Height-map values are heights above the best-fit 'plane' or 'quadric' (mm)."
+    raster_max_normal_angle_deg: float = _angle_deg(
+        d.RASTER_MAX_NORMAL_ANGLE_DEG, "Points steeper than this (from +z) are left out of the height map."
     )
-    raster_max_normal_angle_deg: float = Field(
-        d.RASTER_MAX_NORMAL_ANGLE_DEG,
-        gt=0,
-        le=90,
-        description="Points steeper than this (degrees from +z) are left out of the height map.",
-    )
-    fill_max_distance_mm: float = Field(
+    fill_max_distance_mm: float = param(
         d.FILL_MAX_DISTANCE_MM,
-        ge=0,
-        description="Empty pixels this close to data (mm) inside the coin are filled.",
+        doc="Empty pixels this close to data inside the coin are filled.",
+        unit="mm",
+        low=0.0,
     )
 
     @classmethod
     def from_overrides(cls, **overrides: Any) -> PreprocessConfig:
-        """The default configuration with some fields changed; a bad value raises ``ParameterError``."""
-        try:
-            return cls(**overrides)
-        except ValidationError as error:
-            raise ParameterError(_one_line(error)) from None
-
-
-def _one_line(error: ValidationError) -> str:
-    """'The 'grid_size_mm' parameter of PreprocessConfig must be greater than 0. Got -1.' (first problem)."""
-    first = error.errors()[0]
-    name = ".".join(str(part) for part in first["loc"]) or "?"
-    more = f" (and {error.error_count() - 1} more problems)" if error.error_count() > 1 else ""
-    got = f" Got {first['input']!r}." if first["type"] != "extra_forbidden" else ""
-    return f"The '{name}' parameter of PreprocessConfig: {first['msg'].lower()}.{got}{more}"
+        """The default configuration with some fields changed; a bad value or name: ``ParameterError``."""
+        known = [f.name for f in fields(cls)]
+        for name in overrides:
+            if name not in known:
+                raise ParameterError(
+                    f"The {name!r} parameter of PreprocessConfig is not a parameter. Its parameters: "
+                    f"{', '.join(known)}."
+                )
+        return cls(**overrides)

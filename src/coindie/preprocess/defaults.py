@@ -1,6 +1,6 @@
 """Default preprocessing parameters, shared by the functions' keyword defaults and ``PreprocessConfig``.
 
-Kept free of heavy imports (no pydantic) so that the fast CLI commands can use them.
+Kept free of heavy imports so that the fast CLI commands can use them.
 """
 
 from __future__ import annotations

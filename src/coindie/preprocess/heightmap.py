@@ -8,6 +8,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy import ndimage
 
+from coindie.arrays import BoolArray, FloatArray
 from coindie.errors import ParameterError
 from coindie.preprocess.canonical import CanonicalFrame, SurfaceModel, canonical_frame
 from coindie.preprocess.defaults import (
@@ -16,10 +17,8 @@ from coindie.preprocess.defaults import (
     MAX_HEIGHTMAP_PIXELS,
     RASTER_MAX_NORMAL_ANGLE_DEG,
 )
-from coindie.preprocess.frames import FloatArray
 from coindie.scan import Scan
 
-BoolArray = NDArray[np.bool_]
 #: Normalised-convolution fills need at least this much Gaussian weight from data pixels.
 _MIN_FILL_WEIGHT = 1e-3
 

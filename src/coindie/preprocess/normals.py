@@ -6,9 +6,9 @@ import numpy as np
 from numpy.typing import ArrayLike
 from scipy.spatial import cKDTree
 
+from coindie.arrays import FloatArray
 from coindie.errors import ParameterError
 from coindie.preprocess.defaults import NORMALS_K, NORMALS_RADIUS_MM
-from coindie.preprocess.frames import FloatArray
 
 #: Points per batch of neighbourhoods (bounds the (batch, k, 3) temporary arrays to a few tens of MB).
 _BATCH = 65_536

@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from coindie.preprocess.frames import FloatArray, rigid, rotation_between
+from coindie.arrays import FloatArray
 from coindie.scan import Scan
+from coindie.transforms import rigid, rotation_between
 
 _Z = np.array([0.0, 0.0, 1.0])
 #: A mean normal shorter than this is no guide to which side is up (normals cancel out).

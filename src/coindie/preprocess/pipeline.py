@@ -6,15 +6,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from coindie.arrays import FloatArray
 from coindie.errors import InvalidScanError
 from coindie.preprocess.canonical import CanonicalFrame, canonical_frame
 from coindie.preprocess.config import PreprocessConfig
-from coindie.preprocess.frames import FloatArray, rigid
 from coindie.preprocess.heightmap import HeightMap, height_map
 from coindie.preprocess.normals import estimate_normals
 from coindie.preprocess.orientation import pca_transform
 from coindie.preprocess.sampling import grid_sample
 from coindie.scan import Scan
+from coindie.transforms import rigid
 
 #: Local PCA needs three points for a plane.
 MIN_POINTS_FOR_NORMALS = 3

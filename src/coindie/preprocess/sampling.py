@@ -8,12 +8,10 @@ from typing import Literal
 import numpy as np
 from numpy.typing import NDArray
 
+from coindie.arrays import FloatArray, IntArray
 from coindie.errors import ParameterError
 from coindie.preprocess.defaults import GRID_SIZE_MM
-from coindie.preprocess.frames import FloatArray
 from coindie.scan import Scan
-
-IntArray = NDArray[np.int64]
 
 
 def cell_keys(points: FloatArray, size: float) -> IntArray:

@@ -9,9 +9,10 @@ from typing import Any
 import numpy as np
 from scipy.spatial import ConvexHull, QhullError, cKDTree
 
-from coindie.preprocess.frames import FloatArray, apply
+from coindie.arrays import FloatArray
 from coindie.preprocess.orientation import pca_transform
 from coindie.scan import Scan
+from coindie.transforms import apply
 
 #: The point spacing is the median nearest-neighbour distance over this many random points (enough for
 #: a median to about 1 %, and much faster than all 200k).

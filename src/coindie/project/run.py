@@ -33,8 +33,9 @@ import numpy as np
 
 from coindie import __version__
 from coindie.errors import CoinDieError
+from coindie.params import Configurable, param
 from coindie.project.backends import Backend, WorkerLost, make_backend
-from coindie.project.store import Project, ProjectError, now
+from coindie.project.store import Project, ProjectError
 from coindie.project.workers import (
     PAIR_FUNCTION_VERSION,
     FaceTask,
@@ -43,6 +44,7 @@ from coindie.project.workers import (
     prepare_face,
     score_batch,
 )
+from coindie.similarity.scorers import SCORERS
 
 #: ``auto`` plans every pair of a side up to this many faces (2 x 19,900 pairs for two such sides: ~20 min
 #: on 2 idle cores at the measured 0.06 CPU-s per pair); above it, the candidate search (BENCHMARK.md).
@@ -58,36 +60,30 @@ Echo = Callable[[str], None]
 
 
 @dataclass(frozen=True)
-class RunConfig:
+class RunConfig(Configurable):
     """The settings of a run (stored with it). The grid of the per-face cache is the histogram's finest."""
 
-    method: str = "relief"
+    method: str = param("relief", doc="the registration method (coindie methods lists them)")
     method_params: dict[str, Any] = field(default_factory=dict)
-    mode: str = "auto"
-    k: int = DEFAULT_K
-    workers: int = 0
-    dask: str | None = None
-    batch_faces: int = DEFAULT_BATCH_FACES
-    classifier: str | None = None
-    scorer: str = "relief"  # the shipped model used when no classifier file is given
-    registration_grid_mm: float = 0.1
-    retry_failed: bool = False
-    plan_only: bool = False
-    max_seconds: float | None = None  # stop scoring (cleanly, resumable) after this long
-
-    def __post_init__(self) -> None:
-        if self.mode not in MODES:
-            raise ProjectError(f"unknown run mode {self.mode!r}; known: {', '.join(MODES)}")
-        if self.k < 1:
-            raise ProjectError(f"--candidates K needs K >= 1, got {self.k}")
-        if self.batch_faces < 1:
-            raise ProjectError(f"batch_faces must be >= 1, got {self.batch_faces}")
-        if self.workers < 0:
-            raise ProjectError(f"--workers must be >= 0 (0: one per core), got {self.workers}")
-        from coindie.similarity.scorers import SCORERS
-
-        if self.scorer not in SCORERS:
-            raise ProjectError(f"unknown scorer {self.scorer!r}; known: {', '.join(SCORERS)}")
+    mode: str = param("auto", doc="which pairs are scored", choices=MODES)
+    k: int = param(DEFAULT_K, doc="candidates per face in candidate mode", low=1)
+    workers: int = param(0, doc="worker processes (0: one per core)", low=0)
+    dask: str | None = param(None, str, doc="a Dask scheduler address, or 'local'", optional=True)
+    batch_faces: int = param(DEFAULT_BATCH_FACES, doc="faces per side of a batch's tile", low=1)
+    classifier: str | None = param(
+        None, str, doc="a classifier file (else the scorer's shipped model)", optional=True
+    )
+    scorer: str = param(
+        "relief", doc="the shipped model used when no classifier file is given", choices=tuple(SCORERS)
+    )
+    registration_grid_mm: float = param(
+        0.1, doc="grid of the clouds registered (0: none)", unit="mm", low=0.0
+    )
+    retry_failed: bool = param(False, doc="score again the pairs that failed")
+    plan_only: bool = param(False, doc="prepare the faces and plan the pairs, score none")
+    max_seconds: float | None = param(
+        None, float, doc="stop scoring (cleanly, resumable) after this long", unit="s", low=0.0, optional=True
+    )
 
 
 @dataclass
@@ -131,11 +127,7 @@ def run_project(
     progress = progress or _no_progress
     start = time.perf_counter()
     scorer = _scorer(config)
-    refreshed = project.refresh()
-    if refreshed.added or refreshed.changed:
-        echo(f"{len(refreshed.added)} new and {len(refreshed.changed)} changed scan(s) found")
-    for skipped in refreshed.skipped:
-        echo(f"skipped: {skipped}")
+    _refresh_scans(project, echo)
     run_id = _start_run(project, config, scorer.params_hash)
     project.set_meta(f"populations:{scorer.params_hash}", scorer.populations)
     backend = make_backend(config.workers, config.dask)
@@ -143,16 +135,13 @@ def run_project(
     echo(f"run {run_id} on {backend.description}")
     status, message = "failed", ""
     try:
-        mark = time.perf_counter()
-        _prepare_faces(project, config, backend, report, progress, echo)
-        report.stage_seconds["faces"] = time.perf_counter() - mark
-        mark = time.perf_counter()
-        report.plans = _plan(project, config, scorer.params_hash, run_id, echo)
-        report.stage_seconds["plan"] = time.perf_counter() - mark
+        with _stage(report, "faces"):
+            _prepare_faces(project, config, backend, report, progress, echo)
+        with _stage(report, "plan"):
+            report.plans = _plan(project, config, scorer.params_hash, run_id, echo)
         if not config.plan_only:
-            mark = time.perf_counter()
-            _score_pairs(project, config, scorer, backend, report, progress)
-            report.stage_seconds["pairs"] = time.perf_counter() - mark
+            with _stage(report, "pairs"):
+                _score_pairs(project, config, scorer, backend, report, progress)
         status = "finished"
     except KeyboardInterrupt:
         status, message = "interrupted", "interrupted by the user"
@@ -161,13 +150,36 @@ def run_project(
         message = str(error)
         raise
     finally:
-        restarts = getattr(backend, "restarts", 0)
-        if restarts:
-            echo(f"worker processes died and were replaced {restarts} time(s); their batches were run again")
-        backend.close()
+        _close_run(project, backend, report, status, message, echo)
         report.seconds = time.perf_counter() - start
-        _end_run(project, run_id, status, message)
     return report
+
+
+def _refresh_scans(project: Project, echo: Echo) -> None:
+    """Add the new and changed scans of the project's folders."""
+    refreshed = project.refresh()
+    if refreshed.added or refreshed.changed:
+        echo(f"{len(refreshed.added)} new and {len(refreshed.changed)} changed scan(s) found")
+    for skipped in refreshed.skipped:
+        echo(f"skipped: {skipped}")
+
+
+@contextmanager
+def _stage(report: RunReport, name: str) -> Iterator[None]:
+    """Time one stage into ``report.stage_seconds`` (a stage that raises records no time)."""
+    mark = time.perf_counter()
+    yield
+    report.stage_seconds[name] = time.perf_counter() - mark
+
+
+def _close_run(
+    project: Project, backend: Backend, report: RunReport, status: str, message: str, echo: Echo
+) -> None:
+    restarts = getattr(backend, "restarts", 0)
+    if restarts:
+        echo(f"worker processes died and were replaced {restarts} time(s); their batches were run again")
+    backend.close()
+    project.end_run(report.run_id, status, message)
 
 
 @contextmanager
@@ -224,16 +236,8 @@ def _cache_grid(classifier: Any) -> float:
 
 def _start_run(project: Project, config: RunConfig, params_hash: str) -> int:
     _check_no_other_run(project)
-    with project.transaction() as db:
-        cursor = db.execute(
-            "INSERT INTO runs (started_at, updated_at, status, version, params_hash, config, pid, host) "
-            "VALUES (?, ?, 'running', ?, ?, ?, ?, ?)",
-            (
-                now(), now(), __version__, params_hash, json.dumps(_effective(config), sort_keys=True),
-                os.getpid(), socket.gethostname(),
-            ),
-        )  # fmt: skip
-    return int(cursor.lastrowid or 0)
+    effective = json.dumps(_effective(config), sort_keys=True)
+    return project.start_run(params_hash, effective, __version__, os.getpid(), socket.gethostname())
 
 
 def _effective(config: RunConfig) -> dict[str, Any]:
@@ -242,14 +246,13 @@ def _effective(config: RunConfig) -> dict[str, Any]:
 
 def _check_no_other_run(project: Project) -> None:
     """Two runs writing one project would compute the same pairs twice: refuse while another lives."""
-    for row in project.db.execute("SELECT run_id, pid, host FROM runs WHERE status = 'running'"):
+    for row in project.running_runs():
         alive = row["host"] == socket.gethostname() and pid_alive(row["pid"])
         if alive and row["pid"] != os.getpid():
             raise ProjectError(
                 f"{project.folder}: run {row['run_id']} (process {row['pid']}) is still running"
             )
-        with project.transaction() as db:  # a run that died without closing (kill -9)
-            db.execute("UPDATE runs SET status = 'killed' WHERE run_id = ?", (row["run_id"],))
+        project.mark_run_killed(row["run_id"])
 
 
 def pid_alive(pid: int | None) -> bool:
@@ -262,14 +265,6 @@ def pid_alive(pid: int | None) -> bool:
     except PermissionError:
         return True
     return True
-
-
-def _end_run(project: Project, run_id: int, status: str, message: str) -> None:
-    with project.transaction() as db:
-        db.execute(
-            "UPDATE runs SET status = ?, ended_at = ?, updated_at = ?, message = ? WHERE run_id = ?",
-            (status, now(), now(), message, run_id),
-        )
 
 
 # ------------------------------------------------------------------------------------------------- faces
@@ -309,25 +304,18 @@ def _prepare_faces(
 
 
 def _record_face(project: Project, params: str, result: dict[str, Any]) -> None:
-    with project.transaction() as db:
-        if "error" in result:
-            db.execute(
-                "UPDATE scans SET status = 'error', error = ?, prepared_at = ? WHERE face_id = ?",
-                (result["error"], now(), result["face_id"]),
-            )
-            return
-        db.execute(
-            "INSERT OR REPLACE INTO scan_cache VALUES (?, ?, ?, ?, ?, ?, ?)",
-            (
-                result["content_hash"], params, result["file"], result["n_points"], result["descriptor"],
-                result["seconds"], now(),
-            ),
-        )  # fmt: skip
-        db.execute(
-            "UPDATE scans SET status = 'ok', error = NULL, content_hash = ?, n_points = ?, prepared_at = ? "
-            "WHERE face_id = ?",
-            (result["content_hash"], result["n_points"], now(), result["face_id"]),
-        )
+    if "error" in result:
+        project.record_face_error(result["face_id"], result["error"])
+        return
+    project.record_face(
+        result["face_id"],
+        params,
+        content_hash=result["content_hash"],
+        file=result["file"],
+        n_points=result["n_points"],
+        descriptor=result["descriptor"],
+        seconds=result["seconds"],
+    )
 
 
 # -------------------------------------------------------------------------------------------------- plan
@@ -335,11 +323,7 @@ def _record_face(project: Project, params: str, result: dict[str, Any]) -> None:
 
 def _plan(project: Project, config: RunConfig, params_hash: str, run_id: int, echo: Echo) -> list[SidePlan]:
     face_params = _face_params(project, config)
-    rows = project.db.execute(
-        "SELECT s.face_id, s.side, c.descriptor FROM scans s JOIN scan_cache c "
-        "ON c.content_hash = s.content_hash AND c.params_hash = ? WHERE s.status = 'ok' ORDER BY s.face_id",
-        (face_params,),
-    ).fetchall()
+    rows = project.prepared_faces(face_params)
     plans = []
     for side in sorted({r["side"] for r in rows}):
         faces = [r["face_id"] for r in rows if r["side"] == side]
@@ -353,14 +337,9 @@ def _plan(project: Project, config: RunConfig, params_hash: str, run_id: int, ec
                 [np.frombuffer(r["descriptor"], np.float32) for r in rows if r["side"] == side]
             )
             pairs = candidate_face_pairs(faces, descriptors, config.k)
-        n_before = _count(project, params_hash, side)
-        with project.transaction() as db:
-            db.executemany(
-                "INSERT OR IGNORE INTO pairs (source, target, params_hash, side, origin, planned_run) "
-                "VALUES (?, ?, ?, ?, ?, ?)",
-                ((a, b, params_hash, side, mode, run_id) for a, b in pairs),
-            )
-        n_after = _count(project, params_hash, side)
+        n_before = project.count_pairs(params_hash, side)
+        project.plan_pairs(params_hash, side, mode, run_id, pairs)
+        n_after = project.count_pairs(params_hash, side)
         plan = SidePlan(side, len(faces), mode, n_after, n_after - n_before)
         plans.append(plan)
         echo(_plan_line(plan, config))
@@ -389,20 +368,13 @@ def _plan_line(plan: SidePlan, config: RunConfig) -> str:
         if config.mode == "auto":
             text += (
                 f" (auto: exhaustive only up to {AUTO_EXHAUSTIVE_MAX_FACES} faces per side; "
-                "--exhaustive forces it)"
+                "mode 'exhaustive' forces it)"
             )
     return text + f"; {plan.n_new:,} newly planned"
 
 
 def _face_params(project: Project, config: RunConfig) -> str:
     return face_params_hash(_cache_grid(_classifier(config)), config.registration_grid_mm)
-
-
-def _count(project: Project, params_hash: str, side: str) -> int:
-    row = project.db.execute(
-        "SELECT COUNT(*) AS n FROM pairs WHERE params_hash = ? AND side = ?", (params_hash, side)
-    ).fetchone()
-    return int(row["n"])
 
 
 # ------------------------------------------------------------------------------------------------- pairs
@@ -417,9 +389,7 @@ def _score_pairs(
     progress: Progress,
 ) -> None:
     statuses = ("todo", "failed") if config.retry_failed else ("todo",)
-    marks = ",".join("?" * len(statuses))
-    query = f"SELECT source, target FROM pairs WHERE params_hash = ? AND status IN ({marks})"
-    todo = [(r["source"], r["target"]) for r in project.db.execute(query, (scorer.params_hash, *statuses))]
+    todo = project.pairs_with_status(scorer.params_hash, statuses)
     if not todo:
         return
     files = _cache_files(project, config)
@@ -456,12 +426,7 @@ def _score_pairs(
 
 
 def _cache_files(project: Project, config: RunConfig) -> dict[str, str]:
-    params = _face_params(project, config)
-    rows = project.db.execute(
-        "SELECT s.face_id, c.file FROM scans s JOIN scan_cache c "
-        "ON c.content_hash = s.content_hash AND c.params_hash = ? WHERE s.status = 'ok'",
-        (params,),
-    )
+    rows = project.prepared_faces(_face_params(project, config))
     return {r["face_id"]: str(project.cache_dir / r["file"]) for r in rows}
 
 
@@ -504,36 +469,5 @@ def tile_batches(pairs: list[tuple[str, str]], batch_faces: int) -> list[list[tu
 
 def _commit(project: Project, params_hash: str, run_id: int, rows: list[dict[str, Any]]) -> None:
     """One batch, atomically; a pair already done (by an earlier run) is never overwritten."""
-    stamp = now()
     seconds = sum(json.loads(r["timings"]).get("total", 0.0) for r in rows if r.get("timings"))
-    with project.transaction() as db:
-        db.executemany(
-            "UPDATE pairs SET status = ?, method = ?, valid = ?, reason = ?, probability = ?, residual = ?, "
-            "T_target_source = ?, histogram = ?, features = ?, timings = ?, run_id = ?, done_at = ? "
-            "WHERE source = ? AND target = ? AND params_hash = ? AND status != 'done'",
-            [
-                (
-                    r["status"],
-                    r.get("method"),
-                    r.get("valid"),
-                    r.get("reason"),
-                    r.get("probability"),
-                    r.get("residual"),
-                    r.get("T_target_source"),
-                    r.get("histogram"),
-                    r.get("features"),
-                    r.get("timings"),
-                    run_id,
-                    stamp,
-                    r["source"],
-                    r["target"],
-                    params_hash,
-                )  # fmt: skip
-                for r in rows
-            ],
-        )
-        db.execute(
-            "UPDATE runs SET pairs_done = pairs_done + ?, pairs_seconds = pairs_seconds + ?, updated_at = ? "
-            "WHERE run_id = ?",
-            (len(rows), seconds, stamp, run_id),
-        )
+    project.commit_pairs(params_hash, run_id, rows, seconds)

@@ -49,17 +49,10 @@ class ProjectStatus:
 
 
 def project_status(project: Project, max_errors: int = 50) -> ProjectStatus:
-    db = project.db
-    faces = {
-        r["status"]: r["n"] for r in db.execute("SELECT status, COUNT(*) AS n FROM scans GROUP BY status")
-    }
+    faces = project.face_status_counts()
     params = project.current_params()
-    pairs: dict[str, dict[str, int]] = {}
-    for r in db.execute(
-        "SELECT side, status, COUNT(*) AS n FROM pairs WHERE params_hash = ? GROUP BY side, status", (params,)
-    ):
-        pairs.setdefault(r["side"], {})[r["status"]] = r["n"]
-    run = db.execute("SELECT * FROM runs ORDER BY run_id DESC LIMIT 1").fetchone()
+    pairs = project.pair_status_counts(params)
+    run = project.latest_run()
     last_run = dict(run) if run else None
     if last_run and last_run["status"] == "running" and not _still_running(last_run):
         last_run["status"] = "stopped without closing (killed); coindie run resumes it"
@@ -69,16 +62,8 @@ def project_status(project: Project, max_errors: int = 50) -> ProjectStatus:
         rate = run["pairs_done"] / seconds if seconds > 0 else None
         remaining = sum(counts.get("todo", 0) for counts in pairs.values())
         eta = remaining / rate if rate and remaining else None
-    face_errors = [
-        f"{r['face_id']}: {r['error']}" for r in db.execute("SELECT * FROM scans WHERE status = 'error'")
-    ]
-    pair_errors = [
-        f"{r['source']}-{r['target']}: {r['reason']}"
-        for r in db.execute(
-            "SELECT source, target, reason FROM pairs WHERE params_hash = ? AND status = 'failed' LIMIT ?",
-            (params, max_errors),
-        )
-    ]
+    face_errors = project.face_errors()
+    pair_errors = project.failed_pairs(params, max_errors)
     return ProjectStatus(
         str(project.folder), faces, pairs, last_run, rate, eta, face_errors[:max_errors], pair_errors,
         separation_lines(project),
@@ -91,20 +76,14 @@ def separation_lines(project: Project) -> list[str]:
     the registrations' most common reasons for refusing pairs."""
     params = project.current_params()
     lines = []
-    for (side,) in project.db.execute(
-        "SELECT DISTINCT side FROM pairs WHERE params_hash = ? AND status = 'done' ORDER BY side", (params,)
-    ):
+    for side in project.scored_sides(params):
         calibration = project.calibration(side, params)
         if calibration.separates:
             lines.append(f"scores of side {side}: {calibration.message}")
             continue
         lines.append(f"WARNING, side {side}: {calibration.message}")
-        reasons = project.db.execute(
-            "SELECT reason, COUNT(*) AS n FROM pairs WHERE params_hash = ? AND side = ? AND status = 'done' "
-            "AND valid = 0 GROUP BY reason ORDER BY n DESC LIMIT 3",
-            (params, side),
-        )
-        lines += [f"  refused {r['n']} time(s): {r['reason']}" for r in reasons]
+        reasons = project.refusal_reasons(params, side)
+        lines += [f"  refused {n} time(s): {reason}" for reason, n in reasons]
     return lines
 
 

@@ -11,7 +11,7 @@ import json
 import os
 import sqlite3
 import time
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterable, Iterator, Mapping
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 from datetime import UTC, datetime
@@ -189,8 +189,8 @@ class Project:
     def add_scans(self, scans_dir: str | Path) -> AddReport:
         """List ``scans_dir`` (files are not read here) and record new or changed faces. A face whose file
         changed (size or modification time) is prepared again and loses its pairs."""
+        from coindie.ids import face_id_of
         from coindie.io import open_dataset
-        from coindie.io.reader import face_id_of
 
         scans_dir = Path(scans_dir).resolve()
         dataset = open_dataset(scans_dir)
@@ -261,6 +261,57 @@ class Project:
         ).fetchone()
         return self.cache_dir / row["file"] if row and (self.cache_dir / row["file"]).is_file() else None
 
+    def record_face_error(self, face_id: str, error: str) -> None:
+        """The face could not be prepared: it is left out of every plan, with its error."""
+        with self.transaction() as db:
+            db.execute(
+                "UPDATE scans SET status = 'error', error = ?, prepared_at = ? WHERE face_id = ?",
+                (error, now(), face_id),
+            )
+
+    def record_face(
+        self,
+        face_id: str,
+        params_hash: str,
+        *,
+        content_hash: str,
+        file: str,
+        n_points: int,
+        descriptor: bytes,
+        seconds: float,
+    ) -> None:
+        """The face prepared: its cache file (under ``cache_dir``) and descriptor, for ``params_hash``."""
+        with self.transaction() as db:
+            db.execute(
+                "INSERT OR REPLACE INTO scan_cache VALUES (?, ?, ?, ?, ?, ?, ?)",
+                (content_hash, params_hash, file, n_points, descriptor, seconds, now()),
+            )
+            db.execute(
+                "UPDATE scans SET status = 'ok', error = NULL, content_hash = ?, n_points = ?, "
+                "prepared_at = ? WHERE face_id = ?",
+                (content_hash, n_points, now(), face_id),
+            )
+
+    def prepared_faces(self, params_hash: str) -> list[sqlite3.Row]:
+        """The usable faces prepared for ``params_hash``: ``face_id``, ``side``, ``descriptor`` (float32
+        bytes) and ``file`` (relative to ``cache_dir``), by face id."""
+        return self.db.execute(
+            "SELECT s.face_id, s.side, c.descriptor, c.file FROM scans s JOIN scan_cache c "
+            "ON c.content_hash = s.content_hash AND c.params_hash = ? WHERE s.status = 'ok' "
+            "ORDER BY s.face_id",
+            (params_hash,),
+        ).fetchall()
+
+    def face_status_counts(self) -> dict[str, int]:
+        """Faces by status (``new``, ``ok``, ``error``)."""
+        rows = self.db.execute("SELECT status, COUNT(*) AS n FROM scans GROUP BY status")
+        return {r["status"]: r["n"] for r in rows}
+
+    def face_errors(self) -> list[str]:
+        """``face: error`` of every face that could not be prepared."""
+        rows = self.db.execute("SELECT * FROM scans WHERE status = 'error'")
+        return [f"{r['face_id']}: {r['error']}" for r in rows]
+
     # ------------------------------------------------------------------------------------------ labels
 
     def set_labels(self, labels: Mapping[str, str], source: str) -> None:
@@ -313,6 +364,137 @@ class Project:
             query, args = query + " AND side = ?", (*args, side)
         return [decode_pair(r) for r in self.db.execute(query + " ORDER BY source, target", args)]
 
+    def plan_pairs(
+        self, params_hash: str, side: str, origin: str, run_id: int, pairs: Iterable[tuple[str, str]]
+    ) -> None:
+        """Plan ``(source, target)`` pairs (status ``todo``); a pair already planned stays as it is."""
+        with self.transaction() as db:
+            db.executemany(
+                "INSERT OR IGNORE INTO pairs (source, target, params_hash, side, origin, planned_run) "
+                "VALUES (?, ?, ?, ?, ?, ?)",
+                ((a, b, params_hash, side, origin, run_id) for a, b in pairs),
+            )
+
+    def count_pairs(self, params_hash: str, side: str) -> int:
+        """Pairs of ``side`` planned for ``params_hash``, whatever their status."""
+        row = self.db.execute(
+            "SELECT COUNT(*) AS n FROM pairs WHERE params_hash = ? AND side = ?", (params_hash, side)
+        ).fetchone()
+        return int(row["n"])
+
+    def pairs_with_status(self, params_hash: str, statuses: tuple[str, ...]) -> list[tuple[str, str]]:
+        """``(source, target)`` of the pairs of ``params_hash`` whose status is one of ``statuses``."""
+        marks = ",".join("?" * len(statuses))
+        query = f"SELECT source, target FROM pairs WHERE params_hash = ? AND status IN ({marks})"
+        return [(r["source"], r["target"]) for r in self.db.execute(query, (params_hash, *statuses))]
+
+    def pair_status_counts(self, params_hash: str | None) -> dict[str, dict[str, int]]:
+        """side -> status -> count of the pairs of ``params_hash``."""
+        counts: dict[str, dict[str, int]] = {}
+        for r in self.db.execute(
+            "SELECT side, status, COUNT(*) AS n FROM pairs WHERE params_hash = ? GROUP BY side, status",
+            (params_hash,),
+        ):
+            counts.setdefault(r["side"], {})[r["status"]] = r["n"]
+        return counts
+
+    def failed_pairs(self, params_hash: str | None, limit: int) -> list[str]:
+        """``source-target: reason`` of at most ``limit`` failed pairs."""
+        rows = self.db.execute(
+            "SELECT source, target, reason FROM pairs WHERE params_hash = ? AND status = 'failed' LIMIT ?",
+            (params_hash, limit),
+        )
+        return [f"{r['source']}-{r['target']}: {r['reason']}" for r in rows]
+
+    def scored_sides(self, params_hash: str | None) -> list[str]:
+        """The sides having done pairs for ``params_hash``, sorted."""
+        rows = self.db.execute(
+            "SELECT DISTINCT side FROM pairs WHERE params_hash = ? AND status = 'done' ORDER BY side",
+            (params_hash,),
+        )
+        return [r["side"] for r in rows]
+
+    def refusal_reasons(self, params_hash: str | None, side: str, limit: int = 3) -> list[tuple[str, int]]:
+        """The most common reasons (and their counts) of the done pairs of ``side`` whose registration
+        was refused."""
+        rows = self.db.execute(
+            "SELECT reason, COUNT(*) AS n FROM pairs WHERE params_hash = ? AND side = ? AND status = 'done' "
+            "AND valid = 0 GROUP BY reason ORDER BY n DESC LIMIT ?",
+            (params_hash, side, limit),
+        )
+        return [(r["reason"], r["n"]) for r in rows]
+
+    def commit_pairs(self, params_hash: str, run_id: int, rows: list[dict[str, Any]], seconds: float) -> None:
+        """One batch of pair results and the run's counters, atomically; a pair already done (by an earlier
+        run) is never overwritten. ``rows``: the worker's dictionaries (``source``, ``target``, ``status``
+        and, for a done pair, its figures)."""
+        stamp = now()
+        with self.transaction() as db:
+            db.executemany(
+                "UPDATE pairs SET status = ?, method = ?, valid = ?, reason = ?, probability = ?, "
+                "residual = ?, T_target_source = ?, histogram = ?, features = ?, timings = ?, run_id = ?, "
+                "done_at = ? "
+                "WHERE source = ? AND target = ? AND params_hash = ? AND status != 'done'",
+                [
+                    (
+                        r["status"],
+                        r.get("method"),
+                        r.get("valid"),
+                        r.get("reason"),
+                        r.get("probability"),
+                        r.get("residual"),
+                        r.get("T_target_source"),
+                        r.get("histogram"),
+                        r.get("features"),
+                        r.get("timings"),
+                        run_id,
+                        stamp,
+                        r["source"],
+                        r["target"],
+                        params_hash,
+                    )  # fmt: skip
+                    for r in rows
+                ],
+            )
+            db.execute(
+                "UPDATE runs SET pairs_done = pairs_done + ?, pairs_seconds = pairs_seconds + ?, "
+                "updated_at = ? WHERE run_id = ?",
+                (len(rows), seconds, stamp, run_id),
+            )
+
+    # -------------------------------------------------------------------------------------------- runs
+
+    def start_run(self, params_hash: str, config: str, version: str, pid: int, host: str) -> int:
+        """Record a run as ``running``; its id."""
+        with self.transaction() as db:
+            cursor = db.execute(
+                "INSERT INTO runs (started_at, updated_at, status, version, params_hash, config, pid, host) "
+                "VALUES (?, ?, 'running', ?, ?, ?, ?, ?)",
+                (now(), now(), version, params_hash, config, pid, host),
+            )
+        return int(cursor.lastrowid or 0)
+
+    def running_runs(self) -> list[sqlite3.Row]:
+        """``run_id``, ``pid``, ``host`` of the runs recorded as running (some may have died)."""
+        return self.db.execute("SELECT run_id, pid, host FROM runs WHERE status = 'running'").fetchall()
+
+    def mark_run_killed(self, run_id: int) -> None:
+        """A run that died without closing (kill -9)."""
+        with self.transaction() as db:
+            db.execute("UPDATE runs SET status = 'killed' WHERE run_id = ?", (run_id,))
+
+    def end_run(self, run_id: int, status: str, message: str) -> None:
+        with self.transaction() as db:
+            db.execute(
+                "UPDATE runs SET status = ?, ended_at = ?, updated_at = ?, message = ? WHERE run_id = ?",
+                (status, now(), now(), message, run_id),
+            )
+
+    def latest_run(self) -> dict[str, Any] | None:
+        """The last run's row (``run_id``, ``status``, ``config``, ``pairs_done``, ...), None before any."""
+        row = self.db.execute("SELECT * FROM runs ORDER BY run_id DESC LIMIT 1").fetchone()
+        return dict(row) if row else None
+
     def probability_graph(
         self, side: str | None = None, params_hash: str | None = None, *, calibrated: bool = True
     ) -> ProbabilityGraph:
@@ -345,13 +527,7 @@ class Project:
         MIXTURE_THRESHOLD` on the calibrated probabilities) when the scores of ``side`` (every side when
         None) separate; None when some do not (then a threshold must come from elsewhere)."""
         params_hash = params_hash or self.current_params()
-        sides = [
-            r["side"]
-            for r in self.db.execute(
-                "SELECT DISTINCT side FROM pairs WHERE params_hash = ? AND status = 'done'", (params_hash,)
-            )
-            if side is None or r["side"] == side
-        ]
+        sides = [one for one in self.scored_sides(params_hash) if side is None or one == side]
         if sides and all(self.calibration(one, params_hash).separates for one in sides):
             return MIXTURE_THRESHOLD
         return None

@@ -26,12 +26,15 @@ import weakref
 from collections import OrderedDict
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from coindie.errors import CoinDieError
 from coindie.scan import Scan
+
+if TYPE_CHECKING:
+    from coindie.similarity.histogram import FaceCache
 
 #: Version of the pair function's own code (bump when a change alters results: the pairs are redone).
 PAIR_FUNCTION_VERSION = 2
@@ -165,25 +168,29 @@ class _Worker:
         self.faces: OrderedDict[str, Scan] = OrderedDict()
         self.registrar: SampledRegistrar | None = None
         self.classifier: Any = None
+        self.sampled_faces: FaceCache | None = None
 
     def configure(self, config_text: str, cache_faces: int) -> None:
         if config_text == self.config_text:
             return
-        from coindie.registration import base as registration_base
+        from coindie.caches import LRUCache
         from coindie.registration import get_method
-        from coindie.similarity import histogram as similarity_histogram
+        from coindie.registration.base import CLOUD_CACHE_SIZE
+        from coindie.similarity.histogram import FACE_CACHE_SIZE
         from coindie.similarity.scorers import scorer_from_dict
 
         config = json.loads(config_text)
-        self.registrar = SampledRegistrar(
-            get_method(config["method"], **config["method_params"]), config["registration_grid_mm"]
+        # The registrar and the histogram keep a few faces' work (search trees, relief images, sampled
+        # clouds) keyed by content; a batch touches up to ``cache_faces`` faces, which must all stay cached
+        # for each to be prepared once per batch.
+        method = get_method(
+            config["method"],
+            cloud_cache_size=max(CLOUD_CACHE_SIZE, cache_faces + 2),
+            **config["method_params"],
         )
+        self.registrar = SampledRegistrar(method, config["registration_grid_mm"])
+        self.sampled_faces = LRUCache(max(FACE_CACHE_SIZE, 2 * cache_faces + 4))
         self.classifier = scorer_from_dict(config["classifier"], "the run's classifier")
-        # The registration and histogram modules keep a few faces' work (search trees, relief images,
-        # sampled clouds) keyed by content; a batch touches up to ``cache_faces`` faces, which must all
-        # stay cached for each to be prepared once per batch. Their cache sizes are read at call time.
-        registration_base.CLOUD_CACHE_SIZE = max(registration_base.CLOUD_CACHE_SIZE, cache_faces + 2)
-        similarity_histogram.FACE_CACHE_SIZE = max(similarity_histogram.FACE_CACHE_SIZE, 2 * cache_faces + 4)
         self.config_text = config_text
         self.cache_faces = cache_faces
 
@@ -216,7 +223,12 @@ def score_batch(batch: PairBatch) -> list[dict[str, Any]]:
             source = _WORKER.face(source_id, files[source_id])
             target = _WORKER.face(target_id, files[target_id])
             score = score_pair(
-                source, target, _WORKER.registrar, _WORKER.classifier.settings, _WORKER.classifier
+                source,
+                target,
+                _WORKER.registrar,
+                _WORKER.classifier.settings,
+                _WORKER.classifier,
+                _WORKER.sampled_faces,
             )
             rows.append(
                 {

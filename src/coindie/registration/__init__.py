@@ -5,6 +5,7 @@
 >>> result.T_target_source, result.valid, result.residual  # doctest: +SKIP
 """
 
+from coindie.params import Configurable, Param, param
 from coindie.registration import catalogue as _catalogue  # noqa: F401  (registers every method)
 from coindie.registration.base import (
     CorrespondenceSolver,
@@ -24,7 +25,6 @@ from coindie.registration.compose import Refined
 from coindie.registration.features import FPFH, FeatureExtractor, FeatureRegistration, MutualNN
 from coindie.registration.icp import PointToPlaneICP, point_to_plane_icp
 from coindie.registration.metrics import rotation_error_deg, scaled_registration_error, translation_error_mm
-from coindie.registration.params import Configurable, Param, param
 from coindie.registration.patch_icp import PatchICP
 from coindie.registration.quality import Acceptance
 from coindie.registration.random_search import RandomSearch

@@ -9,7 +9,6 @@ estimates a transform, and the pose is scored on the full clouds and accepted or
 from __future__ import annotations
 
 import time
-from collections import OrderedDict
 from collections.abc import Callable, Iterator, Mapping
 from contextlib import contextmanager
 from dataclasses import dataclass, field, fields, is_dataclass
@@ -18,9 +17,11 @@ from typing import Any, Protocol
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from coindie.arrays import FloatArray
+from coindie.caches import LRUCache
 from coindie.errors import ParameterError
-from coindie.registration.clouds import Cloud, FloatArray, as_scan, content_key
-from coindie.registration.params import Configurable, Param
+from coindie.params import Configurable, Param
+from coindie.registration.clouds import Cloud, as_scan, content_key
 from coindie.registration.quality import Acceptance, alignment
 from coindie.scan import Scan
 
@@ -160,26 +161,21 @@ class Pipeline:
         estimator: Estimator,
         check: Acceptance | None = None,
         params: dict[str, Any] | None = None,
+        *,
+        cloud_cache_size: int = CLOUD_CACHE_SIZE,
     ) -> None:
         self.name = name
         self.estimator = estimator
         self.check = Acceptance() if check is None else check
         self.params = collect_params(estimator, self.check) if params is None else params
-        self._clouds: OrderedDict[bytes, Cloud] = OrderedDict()
+        self._clouds: LRUCache[bytes, Cloud] = LRUCache(cloud_cache_size)
 
     def _cloud(self, scan: Scan) -> Cloud:
         """The scan as a Cloud in canonical order (a permutation of the input points cannot change the
         result), from a small cache: in an all-pairs study each face comes back many times, and its
         order, normals and search tree are then reused."""
         key = content_key(scan.points, scan.normals if scan.normals is not None else np.empty(0))
-        if key in self._clouds:
-            self._clouds.move_to_end(key)
-            return self._clouds[key]
-        cloud = Cloud.canonical(scan, key)
-        self._clouds[key] = cloud
-        if len(self._clouds) > CLOUD_CACHE_SIZE:
-            self._clouds.popitem(last=False)
-        return cloud
+        return self._clouds.get(key, lambda: Cloud.canonical(scan, key))
 
     def register(self, source: Scan | ArrayLike, target: Scan | ArrayLike) -> RegistrationResult:
         """Register ``source`` onto ``target`` (Scans, or (N, 3) arrays in mm).
@@ -250,12 +246,18 @@ class MethodInfo:
     def _all_parts(self) -> tuple[type[Configurable], ...]:
         return (*self.parts, Acceptance)
 
-    def build(self, params: Mapping[str, Any]) -> Pipeline:
+    def build(self, params: Mapping[str, Any], *, cloud_cache_size: int = CLOUD_CACHE_SIZE) -> Pipeline:
         grouped = self._grouped(params)
         built = {part.NAME: part(**grouped.get(part.NAME, {})) for part in self._all_parts()}
         check = built.pop(Acceptance.NAME)
         assert isinstance(check, Acceptance)
-        return Pipeline(self.name, self.factory(**built), check, collect_params(*built.values(), check))
+        return Pipeline(
+            self.name,
+            self.factory(**built),
+            check,
+            collect_params(*built.values(), check),
+            cloud_cache_size=cloud_cache_size,
+        )
 
     def _grouped(self, params: Mapping[str, Any]) -> dict[str, dict[str, Any]]:
         grouped: dict[str, dict[str, Any]] = {}
@@ -303,9 +305,10 @@ def register_method(
     _REGISTRY[name] = MethodInfo(name, summary, parts, factory, local)
 
 
-def get_method(name: str, **params: Any) -> Pipeline:
-    """The registered method ``name`` built with ``params`` (``part.param`` or unique short names)."""
-    return method_info(name).build(params)
+def get_method(name: str, *, cloud_cache_size: int = CLOUD_CACHE_SIZE, **params: Any) -> Pipeline:
+    """The registered method ``name`` built with ``params`` (``part.param`` or unique short names); its
+    pipeline keeps the prepared clouds of the last ``cloud_cache_size`` faces."""
+    return method_info(name).build(params, cloud_cache_size=cloud_cache_size)
 
 
 def method_info(name: str) -> MethodInfo:

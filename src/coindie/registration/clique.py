@@ -21,7 +21,7 @@ import numpy as np
 from numpy.typing import NDArray
 from scipy.spatial.distance import pdist, squareform
 
-from coindie.registration.clouds import FloatArray, IntArray
+from coindie.arrays import FloatArray, IntArray
 
 BoolMatrix = NDArray[np.bool_]
 

@@ -7,17 +7,12 @@ from dataclasses import dataclass, field
 from functools import cached_property
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import ArrayLike
 from scipy.spatial import cKDTree
-from scipy.spatial.transform import Rotation
 
+from coindie.arrays import FloatArray, IntArray
 from coindie.errors import InvalidScanError
-from coindie.preprocess.frames import rigid
 from coindie.scan import Scan
-
-FloatArray = NDArray[np.float64]
-IntArray = NDArray[np.int64]
-BoolArray = NDArray[np.bool_]
 
 #: Fewer points than this cannot define a rigid transform with any redundancy.
 MIN_POINTS = 10
@@ -129,29 +124,3 @@ class Cloud:
         workers = -1 if len(points) >= _PARALLEL_QUERY else 1
         distances, index = self.tree.query(points, distance_upper_bound=max_distance, workers=workers)
         return distances, index
-
-
-def transform_points(T: FloatArray, points: FloatArray) -> FloatArray:
-    return points @ T[:3, :3].T + T[:3, 3]
-
-
-def fit_rigid(src: FloatArray, dst: FloatArray, weights: FloatArray | None = None) -> FloatArray:
-    """``T_dst_src`` minimising the (weighted) squared distances between matched points (Kabsch)."""
-    w = np.ones(len(src)) if weights is None else weights
-    src_mean = np.average(src, axis=0, weights=w)
-    dst_mean = np.average(dst, axis=0, weights=w)
-    R = fit_rotation(src - src_mean, dst - dst_mean, w)
-    return rigid(R, dst_mean - R @ src_mean)
-
-
-def fit_rotation(src: FloatArray, dst: FloatArray, weights: FloatArray | None = None) -> FloatArray:
-    """R minimising sum w_i ||dst_i - R src_i||^2 over rotations (vectors, no translation)."""
-    if len(src) < 2:
-        return np.eye(3)
-    rotation, _ = Rotation.align_vectors(dst, src, weights=weights)
-    return rotation.as_matrix()
-
-
-def small_rotation(omega: FloatArray) -> FloatArray:
-    """The rotation matrix of a rotation vector (rad)."""
-    return Rotation.from_rotvec(omega).as_matrix()

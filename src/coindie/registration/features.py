@@ -13,9 +13,10 @@ from typing import Protocol
 
 import numpy as np
 
+from coindie.arrays import FloatArray, IntArray
+from coindie.params import Configurable, param
 from coindie.registration.base import CorrespondenceSolver, Estimate, Matches, Timer
-from coindie.registration.clouds import Cloud, FloatArray, IntArray, content_rng
-from coindie.registration.params import Configurable, param
+from coindie.registration.clouds import Cloud, content_rng
 from coindie.scan import Scan
 
 

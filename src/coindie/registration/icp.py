@@ -13,9 +13,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from coindie.arrays import FloatArray
+from coindie.params import Configurable, param
 from coindie.registration.base import Estimate, Timer
-from coindie.registration.clouds import Cloud, FloatArray, small_rotation, transform_points
-from coindie.registration.params import Configurable, param
+from coindie.registration.clouds import Cloud
+from coindie.transforms import small_rotation, transform_points
 
 #: Fewer correspondences than this leave the 6 unknowns of an ICP step under-determined.
 MIN_CORRESPONDENCES = 6

@@ -3,9 +3,9 @@
 from __future__ import annotations
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import ArrayLike
 
-FloatArray = NDArray[np.float64]
+from coindie.transforms import inverse  # noqa: F401  (registration/speed.py imports it from here)
 
 
 def scaled_registration_error(points_source: ArrayLike, T_true: ArrayLike, T_estimated: ArrayLike) -> float:
@@ -38,12 +38,3 @@ def translation_error_mm(T_true: ArrayLike, T_estimated: ArrayLike) -> float:
     """Distance (mm) between the two translations."""
     A, B = np.asarray(T_true, dtype=np.float64), np.asarray(T_estimated, dtype=np.float64)
     return float(np.linalg.norm(A[:3, 3] - B[:3, 3]))
-
-
-def inverse(T: ArrayLike) -> FloatArray:
-    """Inverse of a rigid 4x4 transform (transpose of the rotation, no general matrix inverse)."""
-    T = np.asarray(T, dtype=np.float64)
-    result = np.eye(4)
-    result[:3, :3] = T[:3, :3].T
-    result[:3, 3] = -T[:3, :3].T @ T[:3, 3]
-    return result

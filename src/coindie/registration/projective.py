@@ -17,7 +17,9 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import ndimage
 
-from coindie.registration.clouds import BoolArray, Cloud, FloatArray, IntArray, transform_points
+from coindie.arrays import BoolArray, FloatArray, IntArray
+from coindie.registration.clouds import Cloud
+from coindie.transforms import transform_points
 
 
 @dataclass(frozen=True, eq=False)

@@ -2,7 +2,7 @@
 
 Fitness (the share of source points with a target point nearby) cannot tell a right pose from a wrong one
 on coins: a wrongly turned shallow dome still lies within 0.2–0.3 mm of the other coin almost everywhere
-(93–99 % fitness, /work/shared/notes/libraries.md). The median point-to-plane residual of those points does
+(93–99 % fitness on synthetic pairs). The median point-to-plane residual of those points does
 separate them (right poses ≤ 0.011 mm, wrong ones ≥ 0.027 mm on synthetic reliefs), so it is the score that
 ranks candidate poses. It no longer decides ``valid`` by default: a fixed residual in millimetres refused
 75 % of the right same-die poses of another generator's hoards (noisier scanners, cupped flans: residuals
@@ -16,8 +16,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from coindie.registration.clouds import Cloud, FloatArray, transform_points
-from coindie.registration.params import Configurable, param
+from coindie.arrays import FloatArray
+from coindie.params import Configurable, param
+from coindie.registration.clouds import Cloud
+from coindie.transforms import transform_points
 
 
 @dataclass(frozen=True)

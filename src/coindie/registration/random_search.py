@@ -23,18 +23,17 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.spatial.transform import Rotation
 
-from coindie.preprocess.frames import rigid
+from coindie.arrays import FloatArray
+from coindie.params import Configurable, param
 from coindie.preprocess.orientation import pca_transform, up_axis
 from coindie.preprocess.sampling import grid_sample
 from coindie.registration.base import Estimate, Timer
-from coindie.registration.clouds import Cloud, FloatArray, content_rng
+from coindie.registration.clouds import Cloud, content_rng
 from coindie.registration.icp import MIN_CORRESPONDENCES, point_to_plane_icp
-from coindie.registration.metrics import inverse
-from coindie.registration.params import Configurable, param
 from coindie.registration.quality import robust_score
 from coindie.scan import Scan
+from coindie.transforms import euler_rotation, inverse, rigid
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -71,7 +70,7 @@ class RandomSearch(Configurable):
         tilts = self.max_tilt_deg * np.sqrt(rng.uniform(0, 1, self.n_starts))
         directions = rng.uniform(0, 2 * np.pi, self.n_starts)
         angles = np.column_stack([tilts * np.cos(directions), tilts * np.sin(directions), turns])
-        return [rigid(R, np.zeros(3)) for R in Rotation.from_euler("xyz", angles, degrees=True).as_matrix()]
+        return [rigid(R, np.zeros(3)) for R in euler_rotation(angles)]
 
 
 @dataclass(frozen=True)

@@ -14,9 +14,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from coindie.arrays import FloatArray
+from coindie.params import Configurable, param
 from coindie.registration.base import Matches, SolverOutcome
-from coindie.registration.clouds import FloatArray, fit_rigid, transform_points
-from coindie.registration.params import Configurable, param
+from coindie.transforms import fit_rigid, transform_points
 
 #: Least-squares refits on the inliers at most (they stop as soon as the inlier set no longer changes).
 _REFITS = 10

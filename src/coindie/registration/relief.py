@@ -25,15 +25,17 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy import ndimage
 
+from coindie.arrays import BoolArray, FloatArray, IntArray
+from coindie.params import Configurable, param
 from coindie.preprocess.canonical import CanonicalFrame, canonical_frame
 from coindie.preprocess.heightmap import height_map
 from coindie.registration.base import Estimate, Timer
-from coindie.registration.clouds import BoolArray, Cloud, FloatArray, IntArray, transform_points
+from coindie.registration.clouds import Cloud
 from coindie.registration.icp import MIN_CORRESPONDENCES, IcpOutcome, point_to_plane_icp
-from coindie.registration.params import Configurable, param
 from coindie.registration.projective import ProjectedCloud
 from coindie.registration.relief_search import ReliefImage, align_reliefs, pose_score
 from coindie.scan import Scan
+from coindie.transforms import transform_points
 
 #: Points of the relief whose normal is within this angle of the face's up direction (the edge wall and
 #: steep flaws are left out of the ICP).

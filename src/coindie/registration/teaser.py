@@ -21,10 +21,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from coindie.arrays import BoolArray, FloatArray, IntArray
+from coindie.params import Configurable, param
 from coindie.registration.base import Matches, SolverOutcome
 from coindie.registration.clique import consistency_graph, maximum_clique
-from coindie.registration.clouds import BoolArray, FloatArray, IntArray, fit_rotation
-from coindie.registration.params import Configurable, param
+from coindie.transforms import fit_rotation
 
 #: A rotation needs at least this many matches (two independent TIMs).
 MIN_CLIQUE = 3

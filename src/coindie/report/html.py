@@ -226,7 +226,7 @@ def _parameters(project_folder: Path, sides: dict[str, SideDies]) -> str:
     from coindie.project import open_project
 
     project = open_project(project_folder)
-    row = project.db.execute("SELECT * FROM runs ORDER BY run_id DESC LIMIT 1").fetchone()
+    row = project.latest_run()
     items = [
         ("project", str(project.folder)),
         ("coindie", __version__),

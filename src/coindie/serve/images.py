@@ -21,11 +21,11 @@ from scipy import ndimage
 
 from coindie.io import read_scan
 from coindie.preprocess.canonical import CanonicalFrame, canonical_frame
-from coindie.preprocess.frames import apply
 from coindie.preprocess.heightmap import HeightMap, height_map
 from coindie.render import TONES, hillshade, render_relief
 from coindie.scan import Scan
 from coindie.similarity.histogram import HistogramSettings, c2c_distances, sampled_face
+from coindie.transforms import apply
 
 #: Height difference (mm) shown at full colour in the difference view.
 DIFFERENCE_RANGE_MM = 0.2

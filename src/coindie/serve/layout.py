@@ -12,7 +12,7 @@ import math
 import networkx as nx
 import numpy as np
 
-from coindie.clustering import ProbabilityGraph, cluster
+from coindie.clustering import ConnectedComponents, ProbabilityGraph
 
 #: Empty space between two packed clusters (layout units; a singleton is 1 wide).
 GAP = 0.6
@@ -22,7 +22,9 @@ def cluster_layout(
     graph: ProbabilityGraph, threshold: float, seed: int = 0
 ) -> dict[str, tuple[float, float]]:
     """Face -> (x, y); clusters apart, on rows about as wide as the whole is tall."""
-    groups = cluster(graph, "components", threshold).clusters() if graph.n_nodes else []
+    groups = (
+        ConnectedComponents(threshold=threshold).fit(graph).clustering_.clusters() if graph.n_nodes else []
+    )
     kept = graph.probability > threshold
     g = nx.Graph()
     g.add_nodes_from(graph.nodes)

@@ -1,7 +1,7 @@
 """Manual registration: the expert's corresponding points give a start (Kabsch), ICP refines it, the pair is
 scored again with the project's classifier.
 
-Uses the library's own pieces: :func:`coindie.registration.clouds.fit_rigid` (Kabsch),
+Uses the library's own pieces: :func:`coindie.transforms.fit_rigid` (Kabsch),
 :func:`coindie.registration.icp.point_to_plane_icp` on the clouds sampled at the registration grid, and
 :func:`coindie.similarity.histogram.c2c_histogram` with the shipped classifier.
 """
@@ -16,11 +16,12 @@ from numpy.typing import NDArray
 
 from coindie.errors import ParameterError
 from coindie.preprocess.sampling import grid_sample
-from coindie.registration.clouds import Cloud, fit_rigid, transform_points
+from coindie.registration.clouds import Cloud
 from coindie.registration.icp import MIN_CORRESPONDENCES, point_to_plane_icp
 from coindie.serve.images import face_scan
 from coindie.similarity.classifier import SameDieClassifier
 from coindie.similarity.histogram import c2c_histogram
+from coindie.transforms import fit_rigid, transform_points
 
 #: The registration grid of the project (mm) and ICP's settings for a refined start: the paper's refinement
 #: (correspondences within 0.1 mm, 10 iterations, stop below 1e-3). Wider correspondences let two flans of

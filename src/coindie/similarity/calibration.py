@@ -26,11 +26,10 @@ from dataclasses import asdict, dataclass
 from typing import Any
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import ArrayLike
 
+from coindie.arrays import FloatArray
 from coindie.errors import ParameterError
-
-FloatArray = NDArray[np.float64]
 
 #: Ashman's D between the two components below which they are not told apart.
 MIN_SEPARATION = 2.0

@@ -22,13 +22,13 @@ from pathlib import Path
 from typing import Any, ClassVar
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import ArrayLike
 
+from coindie.arrays import FloatArray
 from coindie.errors import CoinDieError, ParameterError
+from coindie.params import Configurable, param
 from coindie.similarity.histogram import HistogramSettings
 from coindie.similarity.logistic import fit_platt_logistic, sigmoid
-
-FloatArray = NDArray[np.float64]
 
 #: Version of the JSON format written by :meth:`SameDieClassifier.save`.
 FORMAT_VERSION = 1
@@ -41,7 +41,7 @@ class ClassifierError(CoinDieError, ValueError):
 
 
 @dataclass
-class SameDieClassifier:
+class SameDieClassifier(Configurable):
     """Probability that two registered faces were struck by the same die, from their distance histogram.
 
     ``fit`` learns the scaler (unless it was given, e.g. the paper's), the regression and the calibration;
@@ -50,9 +50,12 @@ class SameDieClassifier:
 
     #: The scorer's name (``coindie run --scorer``) and what it reads of a pair (``PairScore.histogram``).
     NAME: ClassVar[str] = "paper"
+    OWNER: ClassVar[str] = "SameDieClassifier"
     INPUT: ClassVar[str] = "histogram"
 
-    C: float = 1.0
+    C: float = param(
+        1.0, doc="inverse regularisation strength of the logistic regression", low=0.0, low_open=True
+    )
     settings: HistogramSettings = field(default_factory=HistogramSettings)
     mean: FloatArray | None = None
     std: float | None = None
@@ -63,16 +66,9 @@ class SameDieClassifier:
     metadata: dict[str, Any] = field(default_factory=dict)
     #: Pairs whose median point-to-plane residual (mm) exceeds this score 0 (0: none). The shipped model
     #: was trained on pairs that passed the registration's old 0.02 mm test, so it keeps that test.
-    max_residual: float = 0.0
-
-    def __post_init__(self) -> None:
-        if not (isinstance(self.C, int | float) and self.C > 0):
-            raise ParameterError(f"The 'C' parameter of SameDieClassifier must be positive. Got {self.C!r}.")
-        if not (isinstance(self.max_residual, int | float) and self.max_residual >= 0):
-            raise ParameterError(
-                "The 'max_residual' parameter of SameDieClassifier must be >= 0 mm. "
-                f"Got {self.max_residual!r}."
-            )
+    max_residual: float = param(
+        0.0, doc="pairs of a larger median residual score 0 (0: none)", unit="mm", low=0.0
+    )
 
     def refuses(self, residual: float) -> str:
         """Why a pair of this residual (mm) scores 0 without the regression ("" when it does not)."""

@@ -16,27 +16,25 @@ for the target once.
 
 from __future__ import annotations
 
-from collections import OrderedDict
 from dataclasses import asdict, dataclass
 from functools import cached_property
-from threading import Lock
 from typing import Any
 
 import numpy as np
-from numpy.typing import NDArray
 from scipy.spatial import cKDTree
 
+from coindie.arrays import FloatArray
+from coindie.caches import LRUCache
 from coindie.errors import ParameterError
+from coindie.params import Configurable, param
 from coindie.scan import Scan
 
-FloatArray = NDArray[np.float64]
-
-#: Faces kept ready (sampled points and k-d tree): a 0.05 mm face of 150k points takes ~10 MB.
+#: Faces kept ready by default (sampled points and k-d tree): a 0.05 mm face of 150k points takes ~10 MB.
 FACE_CACHE_SIZE = 16
 
 
 @dataclass(frozen=True)
-class HistogramSettings:
+class HistogramSettings(Configurable):
     """How a registered pair becomes a histogram; the defaults are the paper's.
 
     Attributes:
@@ -50,23 +48,19 @@ class HistogramSettings:
             the source->target one only.
     """
 
-    bins: int = 70
-    max_distance_mm: float = 0.6
-    max_normal_angle_rad: float = 1.0
-    source_grid_mm: float = 0.1
-    target_grid_mm: float = 0.05
-    symmetric: bool = False
-
-    def __post_init__(self) -> None:
-        if not (isinstance(self.bins, int) and self.bins >= 1):
-            raise ParameterError(f"The 'bins' setting must be a positive integer. Got {self.bins!r}.")
-        for name in ("max_distance_mm", "source_grid_mm", "target_grid_mm"):
-            value = getattr(self, name)
-            if not (isinstance(value, int | float) and np.isfinite(value) and value > 0):
-                raise ParameterError(f"The {name!r} setting must be a positive number of mm. Got {value!r}.")
-        angle = self.max_normal_angle_rad
-        if not (isinstance(angle, int | float) and 0 < angle <= np.pi):
-            raise ParameterError(f"The 'max_normal_angle_rad' setting must be in (0, pi]. Got {angle!r}.")
+    bins: int = param(70, doc="number of histogram bins", low=1)
+    max_distance_mm: float = param(0.6, doc="histogram range 0..max", unit="mm", low=0.0, low_open=True)
+    max_normal_angle_rad: float = param(
+        1.0, doc="normals farther from the face's main normal are left out", unit="rad", low=0.0,
+        low_open=True, high=float(np.pi),
+    )  # fmt: skip
+    source_grid_mm: float = param(
+        0.1, doc="grid-sampling cell of the source", unit="mm", low=0.0, low_open=True
+    )
+    target_grid_mm: float = param(
+        0.05, doc="grid-sampling cell of the target", unit="mm", low=0.0, low_open=True
+    )
+    symmetric: bool = param(False, doc="mean of both directions' histograms")
 
     @property
     def bin_edges(self) -> FloatArray:
@@ -98,31 +92,47 @@ class SampledFace:
         return cKDTree(self.points)
 
 
+#: Grid-sampled faces keyed by content and sampling settings.
+FaceCache = LRUCache[bytes, SampledFace]
+
+#: The cache of the calls that pass none.
+_FACES: FaceCache = LRUCache(FACE_CACHE_SIZE)
+
+
 def c2c_distances(
-    source: Scan, target: Scan, T_target_source: FloatArray, settings: HistogramSettings | None = None
+    source: Scan,
+    target: Scan,
+    T_target_source: FloatArray,
+    settings: HistogramSettings | None = None,
+    faces: FaceCache | None = None,
 ) -> FloatArray:
     """Nearest-neighbour distances (mm) from the kept source points, mapped into the target frame, to the
     kept target points; distances over ``settings.max_distance_mm`` are included (the histogram drops them).
+    ``faces``: where the sampled faces are kept (the module's cache of ``FACE_CACHE_SIZE`` faces by default).
     """
     settings = settings or HistogramSettings()
     T = _checked_transform(T_target_source)
-    src = sampled_face(source, settings.source_grid_mm, settings.max_normal_angle_rad)
-    tgt = sampled_face(target, settings.target_grid_mm, settings.max_normal_angle_rad)
+    src = sampled_face(source, settings.source_grid_mm, settings.max_normal_angle_rad, faces)
+    tgt = sampled_face(target, settings.target_grid_mm, settings.max_normal_angle_rad, faces)
     return _distances(src.points, tgt, T)
 
 
 def c2c_histogram(
-    source: Scan, target: Scan, T_target_source: FloatArray, settings: HistogramSettings | None = None
+    source: Scan,
+    target: Scan,
+    T_target_source: FloatArray,
+    settings: HistogramSettings | None = None,
+    faces: FaceCache | None = None,
 ) -> FloatArray:
     """The density histogram (``settings.bins`` values, integrating to 1 over 0..max distance) of the
     cloud-to-cloud distances of a registered pair; all zeros when no distance is under the maximum (the
     faces do not overlap at all)."""
     settings = settings or HistogramSettings()
     T = _checked_transform(T_target_source)
-    histogram = density_histogram(c2c_distances(source, target, T, settings), settings)
+    histogram = density_histogram(c2c_distances(source, target, T, settings, faces), settings)
     if settings.symmetric:
         # The other direction: the target (at the source's grid) onto the source (at the target's grid).
-        backward = c2c_distances(target, source, np.linalg.inv(T), settings)
+        backward = c2c_distances(target, source, np.linalg.inv(T), settings, faces)
         histogram = 0.5 * (histogram + density_histogram(backward, settings))
     return histogram
 
@@ -147,34 +157,22 @@ def main_normal(normals: FloatArray) -> FloatArray:
     return mean / length
 
 
-def sampled_face(scan: Scan, grid_mm: float, max_normal_angle_rad: float) -> SampledFace:
+def sampled_face(
+    scan: Scan, grid_mm: float, max_normal_angle_rad: float, faces: FaceCache | None = None
+) -> SampledFace:
     """The scan grid-sampled at ``grid_mm`` with the points facing away from its main normal removed,
-    from a cache keyed by the scan's content and the two settings."""
+    from a cache (``faces``, the module's by default) keyed by the scan's content and the two settings."""
     from coindie.registration.clouds import content_key
 
     key = content_key(scan.points, scan.normals if scan.normals is not None else np.empty(0))
     key += np.array([grid_mm, max_normal_angle_rad], dtype=np.float64).tobytes()
-    with _CACHE_LOCK:
-        face = _CACHE.get(key)
-        if face is not None:
-            _CACHE.move_to_end(key)
-            return face
-    face = _sample(scan, grid_mm, max_normal_angle_rad)
-    with _CACHE_LOCK:
-        _CACHE[key] = face
-        while len(_CACHE) > FACE_CACHE_SIZE:
-            _CACHE.popitem(last=False)
-    return face
+    faces = _FACES if faces is None else faces
+    return faces.get(key, lambda: _sample(scan, grid_mm, max_normal_angle_rad))
 
 
 def clear_cache() -> None:
-    """Forget every cached face (tests, memory)."""
-    with _CACHE_LOCK:
-        _CACHE.clear()
-
-
-_CACHE: OrderedDict[bytes, SampledFace] = OrderedDict()
-_CACHE_LOCK = Lock()
+    """Forget every face of the module's cache (tests, memory)."""
+    _FACES.clear()
 
 
 def _sample(scan: Scan, grid_mm: float, max_normal_angle_rad: float) -> SampledFace:

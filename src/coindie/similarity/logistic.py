@@ -14,9 +14,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import ArrayLike
 
-FloatArray = NDArray[np.float64]
+from coindie.arrays import FloatArray
 
 #: Folds of the out-of-fold decision values that calibrate the probabilities.
 CALIBRATION_FOLDS = 5

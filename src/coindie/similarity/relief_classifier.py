@@ -19,15 +19,15 @@ from pathlib import Path
 from typing import Any, ClassVar
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import ArrayLike
 
+from coindie.arrays import FloatArray
 from coindie.errors import ParameterError
+from coindie.params import Configurable, param
 from coindie.similarity.classifier import ClassifierError, checked_rows, write_model
 from coindie.similarity.histogram import HistogramSettings
 from coindie.similarity.logistic import fit_platt_logistic, sigmoid
 from coindie.similarity.relief_features import FEATURE_NAMES, ReliefFeatureSettings
-
-FloatArray = NDArray[np.float64]
 
 FORMAT = "coindie.relief_classifier"
 FORMAT_VERSION = 1
@@ -38,13 +38,16 @@ _MAX_CORRELATION = 0.999
 
 
 @dataclass
-class ReliefClassifier:
+class ReliefClassifier(Configurable):
     """Probability that two registered faces were struck by the same die, from their relief features."""
 
     NAME: ClassVar[str] = "relief"
+    OWNER: ClassVar[str] = "ReliefClassifier"
     INPUT: ClassVar[str] = "features"
 
-    C: float = 1.0
+    C: float = param(
+        1.0, doc="inverse regularisation strength of the logistic regression", low=0.0, low_open=True
+    )
     features: ReliefFeatureSettings = field(default_factory=ReliefFeatureSettings)
     settings: HistogramSettings = field(default_factory=HistogramSettings)  # the cache's grids
     mean: FloatArray | None = None
@@ -55,10 +58,6 @@ class ReliefClassifier:
     #: mean and sd of the calibrated log-odds of the training pairs: {"same": (m, s), "different": (m, s)}
     populations: dict[str, tuple[float, float]] = field(default_factory=dict)
     metadata: dict[str, Any] = field(default_factory=dict)
-
-    def __post_init__(self) -> None:
-        if not (isinstance(self.C, int | float) and self.C > 0):
-            raise ParameterError(f"The 'C' parameter of ReliefClassifier must be positive. Got {self.C!r}.")
 
     @property
     def is_fitted(self) -> bool:

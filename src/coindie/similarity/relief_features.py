@@ -31,19 +31,16 @@ from __future__ import annotations
 from collections import OrderedDict
 from dataclasses import asdict, dataclass
 from threading import Lock
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
-from numpy.typing import NDArray
 from scipy import ndimage
 
-from coindie.errors import ParameterError
+from coindie.arrays import BoolArray, FloatArray
+from coindie.params import Configurable, Rule, param
 from coindie.preprocess.canonical import CanonicalFrame, canonical_frame
 from coindie.preprocess.heightmap import HeightMap, height_map
 from coindie.scan import Scan
-
-FloatArray = NDArray[np.float64]
-BoolArray = NDArray[np.bool_]
 
 #: The features, in the order of :func:`relief_features`' vector.
 FEATURE_NAMES = ("ncc_fine", "ncc_coarse", "local_median", "local_p90", "overlap")
@@ -59,36 +56,34 @@ _EPS = 1e-12
 
 
 @dataclass(frozen=True)
-class ReliefFeatureSettings:
+class ReliefFeatureSettings(Configurable):
     """How a registered pair becomes :data:`FEATURE_NAMES`. Lengths are in mm on the coin, not on the
     scanner: they describe the size of a die's details (strokes, pellets), which no scanner changes."""
 
-    pixel_mm: float = 0.2
-    field_mm: float = 32.0
-    shape_sigma_mm: float = 3.0
-    fine_sigma_mm: float = 0.6
-    coarse_sigma_mm: float = 2.0
-    window_mm: float = 2.5
-    margin_mm: float = 0.6
+    RULES: ClassVar[tuple[Rule, ...]] = (
+        Rule(
+            ("pixel_mm", "fine_sigma_mm", "coarse_sigma_mm"),
+            lambda s: s.pixel_mm < s.fine_sigma_mm < s.coarse_sigma_mm,
+            "pixel_mm < fine_sigma_mm < coarse_sigma_mm",
+        ),
+        Rule(("field_mm", "pixel_mm"), lambda s: s.field_mm >= 10 * s.pixel_mm, "field_mm >= 10 pixel_mm"),
+    )
 
-    def __post_init__(self) -> None:
-        for name, value in asdict(self).items():
-            if not (isinstance(value, int | float) and np.isfinite(value) and value >= 0):
-                raise ParameterError(
-                    f"The '{name}' parameter of ReliefFeatureSettings must be a finite number >= 0. "
-                    f"Got {value!r}."
-                )
-        if not 0 < self.pixel_mm < self.fine_sigma_mm < self.coarse_sigma_mm:
-            raise ParameterError(
-                "ReliefFeatureSettings needs 0 < pixel_mm < fine_sigma_mm < coarse_sigma_mm. "
-                f"Got {self.pixel_mm}, {self.fine_sigma_mm}, {self.coarse_sigma_mm}."
-            )
-        if self.field_mm < 10 * self.pixel_mm or self.window_mm <= 0 or self.shape_sigma_mm <= 0:
-            raise ParameterError(
-                "ReliefFeatureSettings needs field_mm >= 10 pixels and window_mm, shape_sigma_mm > 0. "
-                f"Got field_mm={self.field_mm}, window_mm={self.window_mm}, "
-                f"shape_sigma_mm={self.shape_sigma_mm}."
-            )
+    pixel_mm: float = param(
+        0.2, doc="pixel of the square grid both faces are rasterised on", unit="mm", low=0.0, low_open=True
+    )
+    field_mm: float = param(32.0, doc="side of that grid, centred on the target's origin", unit="mm", low=0.0)
+    shape_sigma_mm: float = param(
+        3.0, doc="blur of the shape difference taken off the source", unit="mm", low=0.0, low_open=True
+    )
+    fine_sigma_mm: float = param(0.6, doc="the fine band: detail below it", unit="mm", low=0.0)
+    coarse_sigma_mm: float = param(2.0, doc="the coarse band: fine_sigma_mm to it", unit="mm", low=0.0)
+    window_mm: float = param(
+        2.5, doc="Gaussian window of the local correlations", unit="mm", low=0.0, low_open=True
+    )
+    margin_mm: float = param(
+        0.6, doc="band inside the outlines left out (edge wall, flan border)", unit="mm", low=0.0
+    )
 
     @property
     def size_px(self) -> int:

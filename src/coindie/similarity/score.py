@@ -14,15 +14,13 @@ from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
-from numpy.typing import NDArray
 
+from coindie.arrays import FloatArray
 from coindie.registration.base import Registrar
 from coindie.scan import Scan
-from coindie.similarity.histogram import HistogramSettings, c2c_histogram
+from coindie.similarity.histogram import FaceCache, HistogramSettings, c2c_histogram
 from coindie.similarity.relief_features import FEATURE_NAMES, ReliefFeatureSettings, relief_features
 from coindie.similarity.scorers import Scorer, default_scorer
-
-FloatArray = NDArray[np.float64]
 
 
 @dataclass(frozen=True)
@@ -108,17 +106,19 @@ def score_pair(
     registrar: Registrar | None = None,
     settings: HistogramSettings | None = None,
     classifier: Scorer | None = None,
+    faces: FaceCache | None = None,
 ) -> PairScore:
     """Register ``source`` onto ``target``, measure the aligned pair (the paper's distance histogram and
     the relief features), and estimate the probability that both faces were struck by the same die.
 
     Defaults: the ``relief`` registration method, the classifier's own histogram settings (those it was
-    trained with; the paper's when neither is given), the shipped ``relief`` scorer.
+    trained with; the paper's when neither is given), the shipped ``relief`` scorer, the histogram module's
+    cache of sampled faces (``faces``: a caller scoring many pairs passes one sized for its faces).
     """
     classifier = classifier if classifier is not None else _default_classifier()
     settings = settings if settings is not None else classifier.settings
     features = getattr(classifier, "features", None)
-    return measure_pair(source, target, registrar, settings, features).classified(classifier)
+    return measure_pair(source, target, registrar, settings, features, faces).classified(classifier)
 
 
 def measure_pair(
@@ -127,6 +127,7 @@ def measure_pair(
     registrar: Registrar | None = None,
     settings: HistogramSettings | None = None,
     features: ReliefFeatureSettings | None = None,
+    faces: FaceCache | None = None,
 ) -> PairScore:
     """:func:`score_pair` without the classifier (``probability`` is NaN for a valid registration, 0 for
     an invalid one): what a batch stores, so that either scorer can be trained on, or applied to, the
@@ -146,7 +147,7 @@ def measure_pair(
             0.0, timings, residual=result.residual, features=np.zeros(len(FEATURE_NAMES)), **ids,
         )  # fmt: skip
     mark = time.perf_counter()
-    histogram = c2c_histogram(source, target, result.T_target_source, settings)
+    histogram = c2c_histogram(source, target, result.T_target_source, settings, faces)
     timings["histogram"] = time.perf_counter() - mark
     mark = time.perf_counter()
     relief = relief_features(source, target, result.T_target_source, features)

@@ -62,7 +62,9 @@ def labelled_pairs(
     """Same-die and different-die pairs of ``split`` (see the module's docstring), at most ``max_pairs``
     in all, ``negatives`` different-die pairs per same-die pair. Deterministic for a seed."""
     if not negatives > 0:
-        raise ParameterError(f"--negatives must be a positive number per positive pair. Got {negatives}.")
+        raise ParameterError(
+            f"The 'negatives' parameter must be a positive number per positive pair. Got {negatives}."
+        )
     rng = np.random.default_rng(seed)
     faces = [f for f in truth.faces_in(split) if f.family in families]
     if max_faces is not None:
@@ -89,7 +91,7 @@ def sample_faces(faces: list[FaceTruth], max_faces: int, rng: np.random.Generato
     """At most ``max_faces`` faces, split evenly between the sides present: dies in random order, at most
     a tenth of ``max_faces`` (and at least 2) faces of each die."""
     if max_faces < 2:
-        raise ParameterError(f"--max-faces must be at least 2. Got {max_faces}.")
+        raise ParameterError(f"The 'max_faces' parameter must be at least 2. Got {max_faces}.")
     by_side: dict[str, dict[str, list[FaceTruth]]] = {}
     for face in sorted(faces, key=lambda f: f.face_id):
         by_side.setdefault(side(face), {}).setdefault(face.die, []).append(face)

@@ -1,16 +1,17 @@
-"""Documented parameters: each field of a parameter class carries its unit, its valid range and a doc line.
+"""The synthetic hoard's physics parameters, declared through :mod:`coindie.params`.
 
-One table (the field metadata) both documents the parameters (``describe``) and validates them
-(``check_ranges``), in the spirit of scikit-learn's parameter constraints.
+Each field of a physics class (a :class:`~coindie.params.Configurable`) carries its unit, its valid range
+and a doc line: one table both documents the parameters (``describe``) and validates them. A physics
+parameter is any number (an int or a float, kept as given) or a ``(low, high)`` range of numbers.
 """
 
 from __future__ import annotations
 
-import math
+import numbers
 from dataclasses import field, fields
 from typing import Any
 
-from coindie.errors import ParameterError
+from coindie.params import param as declared_param
 
 
 def param(
@@ -22,8 +23,10 @@ def param(
     and low <= high. ``new=True`` marks an axis added after hoards were first made: its default is today's
     behaviour and it is left out of the hoard's records while it holds it (see ``writer.to_jsonable``).
     """
-    metadata = {"unit": unit, "range": (lo, hi), "doc": doc, "pair": pair, "omit_default": new}
-    return field(default=default, metadata=metadata)
+    kind = dict(kind=tuple, item=numbers.Real, length=2, ordered=True) if pair else dict(kind=numbers.Real)
+    return declared_param(
+        default, doc=doc, unit=unit, low=lo, high=hi, metadata={"omit_default": new}, **kind
+    )
 
 
 def new_field(default: Any) -> Any:
@@ -31,48 +34,19 @@ def new_field(default: Any) -> Any:
     return field(default=default, metadata={"omit_default": True})
 
 
-def check_ranges(obj: Any) -> None:
-    """Raise ParameterError naming the first field of ``obj`` outside its documented range."""
-    for f in fields(obj):
-        if "range" not in f.metadata:
-            continue
-        value = getattr(obj, f.name)
-        problem = _range_problem(value, f.metadata["range"], f.metadata["pair"])
-        if problem is not None:
-            lo, hi = f.metadata["range"]
-            kind = "a (low, high) pair of numbers" if f.metadata["pair"] else "a number"
-            raise ParameterError(
-                f"The '{f.name}' parameter of {type(obj).__name__} must be {kind} in the range "
-                f"[{lo}, {hi}] ({f.metadata['unit']}){problem}. Got {value!r}."
-            )
-
-
-def _range_problem(value: Any, bounds: tuple[float, float], pair: bool) -> str | None:
-    values = value if pair else (value,)
-    if pair and (not isinstance(value, tuple | list) or len(value) != 2):
-        return ""
-    for v in values:
-        if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v):
-            return ""
-        if not bounds[0] <= v <= bounds[1]:
-            return ""
-    if pair and values[0] > values[1]:
-        return " with low <= high"
-    return None
-
-
 def describe(cls: type) -> list[dict[str, Any]]:
     """The documentation table of a parameter class: one row per field (name, default, unit, range, doc)."""
     rows = []
     for f in fields(cls):
-        if "range" in f.metadata:
+        declared = f.metadata.get("param")
+        if declared is not None:
             rows.append(
                 {
                     "name": f.name,
                     "default": f.default,
-                    "unit": f.metadata["unit"],
-                    "range": f.metadata["range"],
-                    "doc": f.metadata["doc"],
+                    "unit": declared.unit,
+                    "range": (declared.low, declared.high),
+                    "doc": declared.doc,
                 }
             )
     return rows

@@ -12,8 +12,9 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from coindie.arrays import FloatArray
 from coindie.synth import _raster
-from coindie.synth._raster import FloatArray, Grid, Patch
+from coindie.synth._raster import Grid, Patch
 
 #: Spacing of the samples along a stroke, as a fraction of the grid pitch (the ridge needs < 0.5).
 _SAMPLE_STEP = 0.4

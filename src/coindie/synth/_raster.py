@@ -12,7 +12,7 @@ import numpy as np
 from numpy.typing import NDArray
 from scipy import interpolate, ndimage
 
-FloatArray = NDArray[np.float64]
+from coindie.arrays import FloatArray
 
 #: Neighbouring curve samples examined around the distance transform's nearest one (see ``ridge``).
 _REFINE = 2

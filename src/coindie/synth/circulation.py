@@ -15,13 +15,14 @@ The Riedones hoard barely circulated (the paper), so the defaults keep wear low.
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from typing import ClassVar
 
 import numpy as np
 from scipy import ndimage
 
-from coindie.errors import ParameterError
+from coindie.params import Configurable, Rule
 from coindie.synth import _raster
-from coindie.synth._params import check_ranges, new_field, param
+from coindie.synth._params import new_field, param
 from coindie.synth.strike import Surface
 
 #: Softness (mm) of the plane that heavy wear (over half the top's height) cuts the relief with.
@@ -29,8 +30,12 @@ _WEAR_SOFTNESS_MM = 0.01
 
 
 @dataclass(frozen=True)
-class CirculationParams:
+class CirculationParams(Configurable):
     """Ranges from which each coin's circulation damage is drawn (``sample_circulation``)."""
+
+    RULES: ClassVar[tuple[Rule, ...]] = (
+        Rule(("wear_min", "wear_max"), lambda p: p.wear_min <= p.wear_max, "wear_min <= wear_max"),
+    )
 
     wear_max: float = param(
         0.25,
@@ -88,13 +93,6 @@ class CirculationParams:
     crust_patch_mm: float = param(
         1.0, unit="mm", lo=0.1, hi=10.0, new=True, doc="size (Gaussian sigma) of the crusts' patches"
     )
-
-    def __post_init__(self) -> None:
-        check_ranges(self)
-        if self.wear_min > self.wear_max:
-            raise ParameterError(
-                f"wear_min ({self.wear_min}) of CirculationParams must not exceed wear_max ({self.wear_max})"
-            )
 
 
 @dataclass(frozen=True)

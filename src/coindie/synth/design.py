@@ -23,11 +23,13 @@ from enum import StrEnum
 import numpy as np
 from scipy import ndimage
 
+from coindie.arrays import FloatArray
 from coindie.errors import ParameterError
+from coindie.params import Configurable
 from coindie.synth import _motifs
-from coindie.synth._params import check_ranges, param
+from coindie.synth._params import param
 from coindie.synth._primitives import Primitive, Stroke, n_control, pellet, rasterise_relief
-from coindie.synth._raster import FloatArray, Grid, Placement, resample
+from coindie.synth._raster import Grid, Placement, resample
 from coindie.synth.life import DEFAULT_LIFE, Crack, LifeParams, draw_cracks
 
 #: Radius (mm) at which ``DieParams.sagitta_mm`` is measured.
@@ -68,7 +70,7 @@ def make_type(family: Family | str, seed: int) -> TypeDesign:
 
 
 @dataclass(frozen=True)
-class DieParams:
+class DieParams(Configurable):
     """How a die engraver's copy departs from the type, and the die's surface. Every field is checked
     against its range at construction (``ParameterError``)."""
 
@@ -129,9 +131,6 @@ class DieParams:
     )
     pitch_mm: float = param(0.025, unit="mm", lo=0.005, hi=0.1, doc="pixel of the die's height field")
     extent_mm: float = param(30.0, unit="mm", lo=16.0, hi=60.0, doc="side of the die's engraved square area")
-
-    def __post_init__(self) -> None:
-        check_ranges(self)
 
 
 @dataclass(frozen=True)

@@ -10,12 +10,14 @@ transform between two faces a, b of one die is ``T_scan_die[b] @ inv(T_scan_die[
 
 from __future__ import annotations
 
+import numbers
 from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
 
-from coindie.errors import ParameterError
+from coindie.arrays import FloatArray
+from coindie.params import Configurable, param
 from coindie.scan import Scan, normal_colors
 from coindie.synth.circulation import CirculationParams, CirculationSpec, circulate, sample_circulation
 from coindie.synth.design import Die
@@ -32,29 +34,24 @@ from coindie.synth.scanner import (
 from coindie.synth.strike import StrikeParams, StrikeSpec, bend_points, coin_grid, sample_strike, strike
 from coindie.synth.writer import to_jsonable
 
-FloatArray = np.ndarray
 _DEFAULT_STRIKE, _DEFAULT_CIRCULATION, _DEFAULT_SCAN = StrikeParams(), CirculationParams(), ScanParams()
 #: Coarsest pixel of a coin's height field (mm).
 MAX_SURFACE_PITCH_MM = 0.05
 
 
 @dataclass(frozen=True)
-class FaceSpec:
+class FaceSpec(Configurable):
     """Everything random about one struck and scanned face.
 
     ``die_age``: the share (0-1) of the die's life spent when the coin was struck (wear, crack growth).
     """
 
-    die_age: float
+    die_age: float = param(
+        kind=numbers.Real, doc="share of the die's life spent at the strike", low=0.0, high=1.0
+    )
     strike: StrikeSpec
     circulation: CirculationSpec
     scan: ScanSpec
-
-    def __post_init__(self) -> None:
-        if not 0.0 <= self.die_age <= 1.0:
-            raise ParameterError(
-                f"The 'die_age' of a FaceSpec must be in the range [0, 1]. Got {self.die_age!r}."
-            )
 
 
 def sample_face_spec(

@@ -19,9 +19,11 @@ from typing import TYPE_CHECKING
 import numpy as np
 from scipy import ndimage
 
+from coindie.arrays import FloatArray
+from coindie.params import Configurable
 from coindie.synth import _raster
-from coindie.synth._params import check_ranges, param
-from coindie.synth._raster import FloatArray, Grid, Placement
+from coindie.synth._params import param
+from coindie.synth._raster import Grid, Placement
 
 if TYPE_CHECKING:
     from coindie.synth.design import Die
@@ -33,7 +35,7 @@ WORN_CACHE_SIZE = 24
 
 
 @dataclass(frozen=True)
-class LifeParams:
+class LifeParams(Configurable):
     """How a die softens and cracks over its life (ages 0-1). Checked at construction."""
 
     softening_blur_mm: float = param(
@@ -68,9 +70,6 @@ class LifeParams:
     crack_wiggle_deg: float = param(
         12.0, unit="deg", lo=0.0, hi=60.0, doc="sd of a crack's change of direction per 0.1 mm step"
     )
-
-    def __post_init__(self) -> None:
-        check_ranges(self)
 
 
 #: The default die life.

@@ -26,10 +26,9 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
+from coindie.arrays import IntArray
 from coindie.ids import Face, canonical_face_id
 from coindie.synth.presets import BEARD, FAMILIES, OBVERSE, REVERSE, PairTarget, Preset, real_die_sizes
-
-IntArray = NDArray[np.int64]
 
 #: Random redraws of one die size while fitting a group's coin total (then sizes are nudged by one coin),
 #: and redraws without progress after which the nudging starts.

@@ -20,9 +20,12 @@ beard coins are test-only): training faces never appear in a test set. Die count
 
 from __future__ import annotations
 
+import numbers
 from dataclasses import dataclass, field, replace
+from typing import ClassVar
 
 from coindie.errors import ParameterError
+from coindie.params import Configurable, Rule, param
 
 BEARD, OBVERSE, REVERSE = "beard", "obverse", "reverse"
 #: Families of faces: obverses with beard, obverses without beard, reverses.
@@ -35,24 +38,17 @@ SPLITS = (REG_TEST, REG_TRAIN, CLUSTER_TRAIN, CLUSTER_VAL, CLUSTER_TEST)
 
 
 @dataclass(frozen=True)
-class DieGroup:
+class DieGroup(Configurable):
     """Whole dies of one family whose faces go to the same splits."""
 
-    family: str
-    n_dies: int
-    n_coins: int
-    splits: tuple[str, ...]
+    RULES: ClassVar[tuple[Rule, ...]] = (
+        Rule(("n_dies", "n_coins"), lambda g: g.n_dies <= g.n_coins, "n_dies <= n_coins"),
+    )
 
-    def __post_init__(self) -> None:
-        if self.family not in FAMILIES:
-            raise ParameterError(f"die group family must be one of {FAMILIES}, got {self.family!r}")
-        unknown = set(self.splits) - set(SPLITS)
-        if unknown:
-            raise ParameterError(f"unknown split(s) {sorted(unknown)}; known: {SPLITS}")
-        if not 1 <= self.n_dies <= self.n_coins:
-            raise ParameterError(
-                f"a die group needs 1 <= n_dies <= n_coins, got {self.n_dies} dies for {self.n_coins} coins"
-            )
+    family: str = param(kind=str, doc="the coin family of the dies", choices=FAMILIES)
+    n_dies: int = param(kind=int, doc="dies of the group", low=1)
+    n_coins: int = param(kind=int, doc="coins struck by them", low=1)
+    splits: tuple[str, ...] = param(kind=tuple, doc="the splits its faces go to", item=str, choices=SPLITS)
 
     @property
     def name(self) -> str:
@@ -69,7 +65,7 @@ class PairTarget:
 
 
 @dataclass(frozen=True)
-class LinkParams:
+class LinkParams(Configurable):
     """How obverse and reverse dies share the mint's time line (this makes the die-link network).
 
     Attributes:
@@ -80,38 +76,45 @@ class LinkParams:
         beard_first: whether the obverses with beard were struck before those without beard.
     """
 
-    obverse_overlap: float = 0.2
-    reverse_parallel: int = 2
-    beard_first: bool = True
-
-    def __post_init__(self) -> None:
-        if not 0.0 <= self.obverse_overlap <= 0.5:
-            raise ParameterError(f"obverse_overlap must be in [0, 0.5], got {self.obverse_overlap}")
-        if not 1 <= self.reverse_parallel <= 20:
-            raise ParameterError(f"reverse_parallel must be in [1, 20], got {self.reverse_parallel}")
+    obverse_overlap: float = param(
+        0.2,
+        numbers.Real,
+        doc="share of the shorter life two consecutive obverse dies overlap",
+        low=0.0,
+        high=0.5,
+    )
+    reverse_parallel: int = param(2, numbers.Real, doc="reverse dies in use at once", low=1, high=20)
+    beard_first: bool = param(True, doc="the obverses with beard were struck first")
 
 
 @dataclass(frozen=True)
-class Preset:
+class Preset(Configurable):
     """A hoard's structure: die groups, pair-count targets, die-link parameters.
 
     ``obverse_only_share`` is the share of obverses without beard whose coin has no labelled reverse
     (Riedones3D: 6 of 887). Every beard coin has both faces; the remaining reverses are reverse-only coins.
     """
 
-    name: str
+    RULES: ClassVar[tuple[Rule, ...]] = (
+        Rule(
+            ("pair_targets", "groups"),
+            lambda p: all(0 <= g < len(p.groups) for t in p.pair_targets for g in t.groups),
+            "every pair target names existing groups",
+        ),
+    )
+
+    name: str = param(kind=str, doc="the preset's name")
     groups: tuple[DieGroup, ...]
     pair_targets: tuple[PairTarget, ...] = ()
-    obverse_only_share: float = 6 / 887
+    obverse_only_share: float = param(
+        6 / 887,
+        numbers.Real,
+        doc="share of the obverses without beard with no labelled reverse",
+        low=0.0,
+        high=1.0,
+    )
     links: LinkParams = field(default_factory=LinkParams)
     scale: float = 1.0
-
-    def __post_init__(self) -> None:
-        for target in self.pair_targets:
-            if any(not 0 <= g < len(self.groups) for g in target.groups):
-                raise ParameterError(f"pair target {target} names a group that does not exist")
-        if not 0.0 <= self.obverse_only_share <= 1.0:
-            raise ParameterError(f"obverse_only_share must be in [0, 1], got {self.obverse_only_share}")
 
     def n_coins(self, family: str) -> int:
         return sum(g.n_coins for g in self.groups if g.family == family)

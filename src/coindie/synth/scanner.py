@@ -25,8 +25,9 @@ from scipy import ndimage, sparse
 from scipy.spatial import cKDTree
 from scipy.spatial.transform import Rotation
 
-from coindie.synth._params import check_ranges, new_field, param
-from coindie.synth._raster import FloatArray
+from coindie.arrays import FloatArray
+from coindie.params import Configurable
+from coindie.synth._params import new_field, param
 from coindie.synth.strike import StrikeSpec, Surface, max_radius, outline_radius
 
 #: Face vertices closer than this share of the spacing to the outline are left to the wall.
@@ -34,7 +35,7 @@ _RIM_GAP = 0.3
 
 
 @dataclass(frozen=True)
-class ScanParams:
+class ScanParams(Configurable):
     """Ranges from which each scan is drawn (``sample_scan``). Checked at construction."""
 
     spacing_mm: float = param(
@@ -112,9 +113,6 @@ class ScanParams:
         doc="range of the share of the face's vertices missing (holes in the scan)",
     )
     holes_max: int = param(3, unit="count", lo=1, hi=10, new=True, doc="at most this many hole blobs")
-
-    def __post_init__(self) -> None:
-        check_ranges(self)
 
 
 @dataclass(frozen=True)

@@ -21,9 +21,11 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from coindie.arrays import FloatArray
+from coindie.params import Configurable
 from coindie.synth import _raster
-from coindie.synth._params import check_ranges, param
-from coindie.synth._raster import FloatArray, Grid, Placement
+from coindie.synth._params import param
+from coindie.synth._raster import Grid, Placement
 from coindie.synth.life import relief_at
 
 if TYPE_CHECKING:
@@ -38,7 +40,7 @@ _FILL_SOFTNESS_MM = 0.015
 
 
 @dataclass(frozen=True)
-class StrikeParams:
+class StrikeParams(Configurable):
     """Ranges from which each coin's strike is drawn (``sample_strike``). Checked at construction."""
 
     flan_diameter_mm: tuple[float, float] = param(
@@ -120,9 +122,6 @@ class StrikeParams:
     edge_drop_mm: tuple[float, float] = param(
         (0.1, 0.3), unit="mm", lo=0.0, hi=2.0, pair=True, doc="range of how far the rim falls off"
     )
-
-    def __post_init__(self) -> None:
-        check_ranges(self)
 
 
 @dataclass(frozen=True)

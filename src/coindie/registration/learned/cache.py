@@ -7,10 +7,10 @@ process keeps the descriptors of the last few clouds it described, keyed by what
 
 from __future__ import annotations
 
-from collections import OrderedDict
-from collections.abc import Callable, Hashable
+from collections.abc import Hashable
 
-from coindie.registration.clouds import FloatArray
+from coindie.arrays import FloatArray
+from coindie.caches import LRUCache
 
 #: Every descriptor cache of the process (a handful, one per descriptor module).
 _CACHES: list[DescriptorCache] = []
@@ -22,20 +22,9 @@ def clear_caches() -> None:
         cache.clear()
 
 
-class DescriptorCache:
+class DescriptorCache(LRUCache[Hashable, FloatArray]):
+    """An :class:`~coindie.caches.LRUCache` of descriptors that :func:`clear_caches` empties."""
+
     def __init__(self, size: int = 8) -> None:
-        self.size = size
-        self._items: OrderedDict[Hashable, FloatArray] = OrderedDict()
+        super().__init__(size)
         _CACHES.append(self)
-
-    def get(self, key: Hashable, compute: Callable[[], FloatArray]) -> FloatArray:
-        """The descriptors stored under ``key``, computed (and stored) when they are not there."""
-        if key not in self._items:
-            self._items[key] = compute()
-            if len(self._items) > self.size:
-                self._items.popitem(last=False)
-        self._items.move_to_end(key)
-        return self._items[key]
-
-    def clear(self) -> None:
-        self._items.clear()

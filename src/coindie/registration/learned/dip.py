@@ -20,12 +20,13 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from coindie.arrays import FloatArray, IntArray
 from coindie.errors import CoinDieError
-from coindie.registration.clouds import Cloud, FloatArray, IntArray, content_key
+from coindie.params import Configurable, param
+from coindie.registration.clouds import Cloud, content_key
 from coindie.registration.features import grid_support
 from coindie.registration.learned.cache import DescriptorCache
 from coindie.registration.learned.lrf import canonical_patches
-from coindie.registration.params import Configurable, param
 
 if TYPE_CHECKING:
     from coindie.registration.learned.dip_network import DIPNet
@@ -37,21 +38,15 @@ _descriptor_cache = DescriptorCache(8)
 
 
 @dataclass(frozen=True)
-class DIPConfig:
+class DIPConfig(Configurable):
     """The network's shape and the patch geometry it was trained on (saved with the weights)."""
 
-    radius: float = 2.0  # mm, patch radius
-    n_points: int = 256  # points per patch
-    voxel: float = 0.1  # mm, grid of the clouds it was trained on
-    widths: tuple[int, ...] = (32, 64, 128)  # shared per-point MLP
-    head: tuple[int, ...] = (64,)  # hidden layers after the max pooling
-    dim: int = 32  # descriptor length (FCGF's)
-
-    def __post_init__(self) -> None:
-        if not (self.radius > 0 and self.voxel >= 0 and self.n_points >= 1 and self.dim >= 1):
-            raise CoinDieError(f"Invalid DIP configuration {self}: radius > 0, voxel >= 0, sizes >= 1.")
-        if not self.widths or min(self.widths + self.head, default=1) < 1:
-            raise CoinDieError(f"Invalid DIP configuration {self}: layer widths must be >= 1.")
+    radius: float = param(2.0, doc="patch radius", unit="mm", low=0.0, low_open=True)
+    n_points: int = param(256, doc="points per patch", low=1)
+    voxel: float = param(0.1, doc="grid of the clouds it was trained on", unit="mm", low=0.0)
+    widths: tuple[int, ...] = param((32, 64, 128), doc="shared per-point MLP", item=int, low=1, min_length=1)
+    head: tuple[int, ...] = param((64,), doc="hidden layers after the max pooling", item=int, low=1)
+    dim: int = param(32, doc="descriptor length (FCGF's)", low=1)
 
     def to_json(self) -> str:
         return json.dumps(asdict(self), indent=2)

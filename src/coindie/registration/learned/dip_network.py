@@ -10,22 +10,25 @@ invariance comes from the frame, not from the network. Kept apart from
 from __future__ import annotations
 
 from itertools import pairwise
+from typing import TYPE_CHECKING
 
 import numpy as np
 import torch
 from torch import nn
 from torch.nn import functional
 
-from coindie.registration.clouds import FloatArray
-from coindie.registration.learned.dip import DIPConfig
+from coindie.arrays import FloatArray
+
+if TYPE_CHECKING:
+    from coindie.registration.learned.dip import DIPConfig
 
 
 class DIPNet(nn.Module):
     """PointNet: (B, n_points, 3) canonical patches -> (B, dim) unit-norm descriptors."""
 
-    def __init__(self, config: DIPConfig | None = None) -> None:
+    def __init__(self, config: DIPConfig) -> None:
         super().__init__()
-        self.config = config or DIPConfig()
+        self.config = config
         widths = (3, *self.config.widths)
         self.points = nn.Sequential(*[_Dense(a, b) for a, b in pairwise(widths)])
         sizes = (widths[-1], *self.config.head)

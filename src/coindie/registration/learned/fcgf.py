@@ -33,10 +33,12 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from coindie.arrays import FloatArray, IntArray
 from coindie.errors import CoinDieError, ParameterError
-from coindie.registration.clouds import Cloud, FloatArray, IntArray, content_key, transform_points
+from coindie.params import Configurable, param
+from coindie.registration.clouds import Cloud, content_key
 from coindie.registration.learned.cache import DescriptorCache
-from coindie.registration.params import Configurable, param
+from coindie.transforms import transform_points
 
 if TYPE_CHECKING:
     import torch
@@ -57,7 +59,7 @@ class ModelFileError(CoinDieError, ValueError):
 
 
 @dataclass(frozen=True)
-class FCGFConfig:
+class FCGFConfig(Configurable):
     """The architecture and its input (saved with the weights: a model is rebuilt from it).
 
     ``level`` and ``spins`` are coindie's answer to what a CPU can learn (docs/learned.md): the network's
@@ -68,18 +70,18 @@ class FCGFConfig:
     face so that its fitted plane is z = 0 before voxelising: the invariance to tilts is then exact.
     ``spins = 1`` and ``level = False`` is the paper's FCGF."""
 
-    voxel: float = 0.1  # mm, the finest grid
-    channels: tuple[int, ...] = (16, 32, 64, 128)  # encoder channels per level (stride 1, 2, 4, ...)
-    out_dim: int = 32
-    in_channels: int = 1  # the input feature is "ones"
-    level: bool = False  # turn each face's fitted plane to z = 0 before voxelising
-    spins: int = 1  # turns of the target about its axis searched when matching (1: none)
-
-    def __post_init__(self) -> None:
-        if self.spins < 1 or self.voxel <= 0:
-            raise ParameterError(
-                f"An FCGF model needs spins >= 1 and voxel > 0. Got {self.spins}, {self.voxel}."
-            )
+    voxel: float = param(0.1, doc="the finest grid", unit="mm", low=0.0, low_open=True)
+    channels: tuple[int, ...] = param(
+        (16, 32, 64, 128),
+        doc="encoder channels per level (stride 1, 2, 4, ...)",
+        item=int,
+        low=1,
+        min_length=1,
+    )
+    out_dim: int = param(32, doc="descriptor length", low=1)
+    in_channels: int = param(1, doc='input features per voxel (the input feature is "ones")', low=1)
+    level: bool = param(False, doc="turn each face's fitted plane to z = 0 before voxelising")
+    spins: int = param(1, doc="turns of the target about its axis searched when matching (1: none)", low=1)
 
     @property
     def turn_tolerance_deg(self) -> float:
@@ -106,8 +108,8 @@ def levelling(points: FloatArray, normals: FloatArray) -> FloatArray:
     fitted plane (:func:`coindie.preprocess.canonical.canonical_frame`) to z, face up. The smallest one
     keeps the face's own turn about its axis (no canonical spin is imposed)."""
     from coindie.preprocess.canonical import canonical_frame
-    from coindie.preprocess.frames import rigid, rotation_between
     from coindie.scan import Scan
+    from coindie.transforms import rigid, rotation_between
 
     frame = canonical_frame(Scan(points=points, normals=normals))
     up = frame.T_canonical_scan[:3, :3].T @ np.array([0.0, 0.0, 1.0])
@@ -118,7 +120,7 @@ def levelling(points: FloatArray, normals: FloatArray) -> FloatArray:
 
 def spin(angle_deg: float, centre: FloatArray) -> FloatArray:
     """The 4x4 turn by ``angle_deg`` about the z axis through ``centre``."""
-    from coindie.preprocess.frames import rigid
+    from coindie.transforms import rigid
 
     c, s = np.cos(np.radians(angle_deg)), np.sin(np.radians(angle_deg))
     R = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])

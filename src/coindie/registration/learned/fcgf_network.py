@@ -11,10 +11,11 @@ the head's is followed by batch normalisation and a ReLU.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import torch
 from torch import Tensor, nn
 
-from coindie.registration.learned.fcgf import FCGFConfig
 from coindie.registration.learned.sparse import (
     BatchNorm,
     DownConv,
@@ -27,6 +28,9 @@ from coindie.registration.learned.sparse import (
     relu,
     voxel_map,
 )
+
+if TYPE_CHECKING:
+    from coindie.registration.learned.fcgf import FCGFConfig
 
 
 class ConvNormReLU(nn.Module):

@@ -17,7 +17,7 @@ import numpy as np
 import torch
 from torch import nn
 
-from coindie.registration.clouds import FloatArray, IntArray
+from coindie.arrays import FloatArray, IntArray
 from coindie.registration.learned.dip import DIPConfig
 from coindie.registration.learned.dip import save_model as save_dip
 from coindie.registration.learned.fcgf import FCGFConfig, new_model

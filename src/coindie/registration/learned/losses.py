@@ -19,16 +19,20 @@ from dataclasses import dataclass
 import torch
 from torch import Tensor
 
+from coindie.params import Configurable, param
+
 
 @dataclass(frozen=True)
-class ContrastiveLoss:
+class ContrastiveLoss(Configurable):
     """The loss's settings (the paper's margins: m+ = 0.1, m- = 1.4)."""
 
-    pos_margin: float = 0.1
-    neg_margin: float = 1.4
-    n_positives: int = 1024
-    n_candidates: int = 256
-    negative_radius: float = 0.3  # mm
+    pos_margin: float = param(0.1, doc="matched descriptors closer than this cost nothing", low=0.0)
+    neg_margin: float = param(1.4, doc="unmatched descriptors farther than this cost nothing", low=0.0)
+    n_positives: int = param(1024, doc="true matches per pair in the loss", low=1)
+    n_candidates: int = param(256, doc="candidates searched for the hardest negative", low=1)
+    negative_radius: float = param(
+        0.3, doc="points this close to a match are not its negatives", unit="mm", low=0.0
+    )
 
     def __call__(
         self,

@@ -15,11 +15,9 @@ what makes the descriptor of the patch rotation invariant. Everything is vectori
 from __future__ import annotations
 
 import numpy as np
-from numpy.typing import NDArray
 from scipy.spatial import cKDTree
 
-FloatArray = NDArray[np.float64]
-IntArray = NDArray[np.int64]
+from coindie.arrays import FloatArray, IntArray
 
 #: A tangent direction shorter than this (relative to its weights x radius) is taken as undefined.
 _DEGENERATE = 1e-9

@@ -20,10 +20,10 @@ from pathlib import Path
 
 import numpy as np
 from scipy.spatial import cKDTree
-from scipy.spatial.transform import Rotation
 
+from coindie.arrays import FloatArray, IntArray
 from coindie.io.truth import HoardTruth, TruthError, load_truth
-from coindie.registration.clouds import FloatArray, IntArray, transform_points
+from coindie.transforms import euler_rotation, transform_points
 
 FacePair = tuple[str, str]
 
@@ -42,7 +42,7 @@ class Augmentation:
         angles.append(rng.uniform(-self.spin_deg, self.spin_deg))
         s = rng.uniform(*self.scale) if scale is None else scale
         A = np.eye(4)
-        A[:3, :3] = s * Rotation.from_euler("xyz", angles, degrees=True).as_matrix()
+        A[:3, :3] = s * euler_rotation(angles)
         A[:3, 3] = center - A[:3, :3] @ center
         return A
 

@@ -28,14 +28,14 @@ import time
 from collections.abc import Callable
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 import torch
 
 from coindie.errors import ParameterError
 from coindie.io.truth import hoard_recipe
-from coindie.registration.clouds import transform_points
+from coindie.params import Configurable, Rule, param
 from coindie.registration.features import MutualNN
 from coindie.registration.learned.dip import DIPConfig
 from coindie.registration.learned.fcgf import FCGFConfig, config_path, count_parameters, torch_threads
@@ -51,6 +51,7 @@ from coindie.registration.learned.pairs import (
     level_pair,
     split_pairs,
 )
+from coindie.transforms import transform_points
 
 CHECKPOINT = "checkpoint.safetensors"
 MODEL = "fcgf.safetensors"
@@ -65,50 +66,48 @@ EpochReport = Callable[[dict[str, Any]], None]
 
 
 @dataclass(frozen=True)
-class TrainOptions:
+class TrainOptions(Configurable):
     """Training settings (defaults: the paper's)."""
 
-    epochs: int = 380
-    lr: float = 0.1
-    momentum: float = 0.8
-    weight_decay: float = 1e-4
-    lr_decay: float = 0.99  # lr factor after each epoch
-    batch_pairs: int = 1  # pairs per SGD step
-    max_pairs: int = 0  # training pairs per epoch, drawn anew each epoch (0: all)
-    val_fraction: float = 0.1  # share of the pairs held out (whole dies)
-    max_val_pairs: int = 32
-    split: str = "registration_train"
-    seed: int = 0
-    device: str = "cpu"
-    threads: int = 1  # torch CPU threads (0: torch's default; more than the idle cores is many times slower)
-    fmr_radius: float = 0.3  # mm
-    fmr_ratio: float = 0.05
-    fmr_points: int = 5000
-    patches: int = 256  # DIP: true matches (patch pairs) per training pair
-    crop_radius: float = 0.0  # mm: train on balls of this radius around a random true match (0: whole faces)
+    RULES: ClassVar[tuple[Rule, ...]] = (
+        Rule(
+            ("device",),
+            lambda o: o.device != "cuda" or torch.cuda.is_available(),
+            "a device this PyTorch build sees (it sees no CUDA device)",
+        ),
+    )
+
+    epochs: int = param(380, doc="passes over the training pairs", low=1)
+    lr: float = param(0.1, doc="SGD learning rate", low=0.0, low_open=True)
+    momentum: float = param(0.8, doc="SGD momentum", low=0.0, high=1.0, high_open=True)
+    weight_decay: float = param(1e-4, doc="SGD weight decay")
+    lr_decay: float = param(0.99, doc="lr factor after each epoch", low=0.0, low_open=True, high=1.0)
+    batch_pairs: int = param(1, doc="pairs per SGD step", low=1)
+    max_pairs: int = param(0, doc="training pairs per epoch, drawn anew each epoch (0: all)", low=0)
+    val_fraction: float = param(
+        0.1, doc="share of the pairs held out (whole dies)", low=0.0, high=1.0, high_open=True
+    )
+    max_val_pairs: int = param(32, doc="validation pairs at most", low=1)
+    split: str = param("registration_train", doc="the hoard's split trained on")
+    seed: int = param(0, doc="seed of the pairs' draws and of the network's initialisation")
+    device: str = param("cpu", doc="where torch trains", choices=("cpu", "cuda"))
+    threads: int = param(
+        1, doc="torch CPU threads (0: torch's default; more than the idle cores is many times slower)", low=0
+    )
+    fmr_radius: float = param(
+        0.3, doc="a match this close to the truth is an inlier", unit="mm", low=0.0, low_open=True
+    )
+    fmr_ratio: float = param(0.05, doc="inlier ratio above which a pair counts as matched (FMR)")
+    fmr_points: int = param(5000, doc="points per face of the FMR", low=1)
+    patches: int = param(256, doc="DIP: true matches (patch pairs) per training pair", low=1)
+    crop_radius: float = param(
+        0.0,
+        doc="train on balls of this radius around a random true match (0: whole faces)",
+        unit="mm",
+        low=0.0,
+    )
     model: ModelConfig = field(default_factory=FCGFConfig)
     loss: ContrastiveLoss = field(default_factory=ContrastiveLoss)
-
-    def __post_init__(self) -> None:
-        positive = ("epochs", "lr", "batch_pairs", "max_val_pairs", "fmr_radius", "fmr_points", "patches")
-        for name in positive:
-            if not getattr(self, name) > 0:
-                raise ParameterError(
-                    f"The {name!r} training option must be > 0. Got {getattr(self, name)!r}."
-                )
-        if self.threads < 0 or self.max_pairs < 0 or self.crop_radius < 0:
-            raise ParameterError(
-                "threads, max_pairs and crop_radius must be >= 0. "
-                f"Got {self.threads}, {self.max_pairs}, {self.crop_radius}."
-            )
-        if not (0 <= self.momentum < 1 and 0 < self.lr_decay <= 1 and 0 <= self.val_fraction < 1):
-            raise ParameterError(
-                "Training options need 0 <= momentum < 1, 0 < lr_decay <= 1, 0 <= val_fraction < 1."
-            )
-        if self.device == "cuda" and not torch.cuda.is_available():
-            raise ParameterError("--device cuda: this PyTorch build sees no CUDA device.")
-        if self.device not in ("cpu", "cuda"):
-            raise ParameterError(f"The device must be 'cpu' or 'cuda'. Got {self.device!r}.")
 
     @property
     def learner(self) -> Learner:

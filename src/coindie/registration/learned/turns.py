@@ -16,7 +16,8 @@ from typing import Protocol
 
 import numpy as np
 
-from coindie.registration.clouds import Cloud, FloatArray, IntArray
+from coindie.arrays import FloatArray, IntArray
+from coindie.registration.clouds import Cloud
 from coindie.registration.features import FeatureExtractor, FeatureRegistration
 
 
