@@ -166,7 +166,7 @@ class DaskCluster(_InOrder):
         try:
             from dask.distributed import Client, LocalCluster
         except ImportError as error:
-            raise BackendError(f"--dask needs dask[distributed] installed ({error})") from None
+            raise BackendError(f"the 'dask' backend needs dask[distributed] installed ({error})") from None
         self.cluster = None
         try:
             if address == "local":
