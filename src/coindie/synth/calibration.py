@@ -25,10 +25,10 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
-from numpy.typing import NDArray
 from scipy.spatial import cKDTree
 from scipy.stats import ks_2samp, wasserstein_distance
 
+from coindie.arrays import FloatArray
 from coindie.io import read_labels, read_ply
 from coindie.scan import Scan
 from coindie.synth.plan import HoardPlan, LinkStats, link_stats
@@ -42,8 +42,6 @@ TARGET_GRID_MM = 0.05
 MAX_NORMAL_ANGLE_RAD = 1.0
 REAL_FILES = {OBVERSE: "experts_obverse_dies.csv", REVERSE: "experts_reverse_dies.csv"}
 SCALER_FILE = "histogram_scaler.json"
-
-FloatArray = NDArray[np.float64]
 
 
 # --- die sizes and die links ----------------------------------------------------------------------------
