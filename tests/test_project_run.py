@@ -196,3 +196,24 @@ def test_tiles_cover_every_pair_once_and_bound_the_faces_per_batch() -> None:
     flat = [pair for batch in batches for pair in batch]
     assert sorted(flat) == pairs
     assert all(len({f for pair in batch for f in pair}) <= 8 for batch in batches)
+
+
+def test_a_worker_does_not_take_one_projects_face_for_anothers(tmp_path: Path) -> None:
+    """One worker runs in the caller's process and keeps the faces it loaded: two projects in turn whose
+    faces share an id (every hoard has an L0001D) each get their own."""
+    import numpy as np
+
+    from coindie.project.workers import _Worker
+
+    worker = _Worker()
+    worker.cache_faces = 4
+    paths = []
+    for k in range(2):
+        path = tmp_path / f"project{k}" / "face.npz"
+        path.parent.mkdir()
+        points = np.full((20, 3), float(k))
+        np.savez(path, points=points.astype(np.float32), normals=np.tile([0.0, 0.0, 1.0], (20, 1)))
+        paths.append(str(path))
+    first, second = (worker.face("L0001D", p) for p in paths)
+    assert first.points[0, 0] == 0.0 and second.points[0, 0] == 1.0
+    assert worker.face("L0001D", paths[0]) is first  # still cached: loaded once per file

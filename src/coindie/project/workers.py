@@ -195,13 +195,16 @@ class _Worker:
         self.cache_faces = cache_faces
 
     def face(self, face_id: str, path: str) -> Scan:
-        if face_id in self.faces:
-            self.faces.move_to_end(face_id)
-            return self.faces[face_id]
+        # Keyed by the cache file, whose name holds the face's content hash: a process that runs several
+        # projects in turn (one worker runs in the caller's process) must not take one hoard's L0001D
+        # for another's.
+        if path in self.faces:
+            self.faces.move_to_end(path)
+            return self.faces[path]
         with np.load(path) as data:
             points, normals = data["points"].astype(np.float64), data["normals"].astype(np.float64)
         scan = Scan(points=points, normals=normals, id=face_id)
-        self.faces[face_id] = scan
+        self.faces[path] = scan
         while len(self.faces) > self.cache_faces:
             self.faces.popitem(last=False)
         return scan
