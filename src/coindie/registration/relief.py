@@ -7,10 +7,9 @@ Per face, once (cached by content):
     3. the polar log-spectrum of that image (for the rotation search) and a sample of relief points
        (for the ICP).
 Per pair:
-    4. planar alignment (:mod:`coindie.registration.relief_search`): the rotation about z from the spectra,
-    then
-       rotation choice and translation by masked normalised cross-correlation — a global search over every
-       rotation and translation in a few FFTs, where random-search ICP tries starts one by one;
+    4. planar alignment (:mod:`coindie.registration.relief_search`): every turn about z (8° apart, the best
+       refined) and every translation scored by masked normalised cross-correlation in batches of FFTs —
+       a global search, where random-search ICP tries starts one by one;
     5. the 2-D result lifted to 3-D through both canonical frames;
     6. point-to-plane ICP on the relief points refines the remaining tilt, height and sub-pixel offsets.
 
