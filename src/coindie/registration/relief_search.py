@@ -185,7 +185,8 @@ class ReliefImage:
     mask: BoolImage
     pixel_mm: float
     polar: FloatImage
-    _spectra: dict[int, FixedSpectra] = field(default_factory=dict, repr=False)
+    _spectra: dict[tuple[int, tuple[int, ...]], FixedSpectra] = field(default_factory=dict, repr=False)
+    _cropped: dict[int, tuple[FloatImage, BoolImage, int]] = field(default_factory=dict, repr=False)
 
     @classmethod
     def from_grid(
@@ -217,7 +218,13 @@ class ReliefImage:
         the footprint at every turn, and the index where the square starts (rows and columns alike).
 
         The field is wider than a coin so that any face fits; correlating the square alone costs half
-        as much, and pixels outside both footprints change no masked correlation."""
+        as much, and pixels outside both footprints change no masked correlation. Cached per step: every
+        correlation of the face asks for it."""
+        if step not in self._cropped:
+            self._cropped[step] = self._crop(step)
+        return self._cropped[step]
+
+    def _crop(self, step: int) -> tuple[FloatImage, BoolImage, int]:
         detail, mask = self.reduced(step)
         size = detail.shape[0]
         centre = (self.detail.shape[0] - 1.0) / 2.0 / step
@@ -320,13 +327,13 @@ def _search_turns(
         for a, s, d in zip(angles, all_scores, all_shifts, strict=True)
     ]
     # The best angle to below the step, by halving: try half the last step to either side, keep the best.
-    best_angle, best_score, best_shift = max(tried, key=lambda entry: entry[1])
+    best_angle = max(tried, key=lambda entry: entry[1])[0]
     delta = third / 2.0
     while delta > np.radians(0.2):
         for candidate in (best_angle - delta, best_angle + delta):
             score, shift = _correlate(source, target, candidate, step, min_overlap)
             tried.append((candidate, score, shift))
-        best_angle, best_score, best_shift = max(tried, key=lambda entry: entry[1])
+        best_angle = max(tried, key=lambda entry: entry[1])[0]
         delta /= 2.0
     return tried
 
@@ -367,7 +374,7 @@ def correlate_turns(
 def _cropped_spectra(image: ReliefImage, step: int, moving_shape: tuple[int, ...]) -> FixedSpectra:
     """The fixed-side spectra of ``image``'s cropped square for moving images of ``moving_shape`` (cached
     with the image's other spectra)."""
-    key = hash(("cropped", step, tuple(moving_shape)))
+    key = (step, tuple(moving_shape))
     if key not in image._spectra:
         detail, mask, _ = image.cropped(step)
         image._spectra[key] = FixedSpectra.of(detail, mask, moving_shape)
