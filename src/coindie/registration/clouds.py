@@ -111,6 +111,11 @@ class Cloud:
         return cKDTree(self.points)
 
     @cached_property
+    def footprint(self) -> Footprint:
+        """The face's outline in its best-fit plane (see :class:`Footprint`)."""
+        return Footprint.of(self.points, self.normals)
+
+    @cached_property
     def key(self) -> bytes:
         """A digest of the content: equal clouds have equal keys (per-face caches are keyed by it)."""
         return self.known_key if self.known_key is not None else content_key(self.points, self.normals)
@@ -124,3 +129,57 @@ class Cloud:
         workers = -1 if len(points) >= _PARALLEL_QUERY else 1
         distances, index = self.tree.query(points, distance_upper_bound=max_distance, workers=workers)
         return distances, index
+
+
+#: Points of a face that fit its footprint's plane (a regular subsample of larger clouds).
+_FOOTPRINT_FIT_POINTS = 5000
+
+
+@dataclass(frozen=True, eq=False)
+class Footprint:
+    """Where a face is, seen from above: its best-fit plane (``origin``, in-plane ``axes`` (2, 3), ``up``
+    towards the relief) and the cells of a square grid of side ``pixel`` over that plane that its points
+    cover (one cell of dilation closes the gaps between the vertices of any scanner coarser than the grid's
+    third). Tells which points of another face, once moved, lie over this one: the overlap of two faces as
+    a share of area, whatever the scanner's noise, the flans' shapes or a bend."""
+
+    origin: FloatArray
+    axes: FloatArray
+    up: FloatArray
+    pixel: float
+    corner: FloatArray  # (2,) in-plane coordinates of cell (0, 0)
+    cells: np.ndarray  # (rows, cols) bool
+
+    #: Side of the cells (mm): a coin's outline at a tenth of a flaw's size, several vertices of the
+    #: coarsest scanner (0.15 mm) per cell.
+    PIXEL_MM = 0.5
+
+    @classmethod
+    def of(cls, points: FloatArray, normals: FloatArray | None = None, pixel: float = PIXEL_MM) -> Footprint:
+        from scipy import ndimage
+
+        fit = points[:: -(-len(points) // _FOOTPRINT_FIT_POINTS)]
+        origin = fit.mean(axis=0)
+        _, _, vt = np.linalg.svd(fit - origin, full_matrices=False)
+        up = vt[2]
+        towards = normals.mean(axis=0) if normals is not None and len(normals) else np.array([0.0, 0.0, 1.0])
+        if float(up @ towards) < 0:
+            up = -up
+        axes = vt[:2]
+        uv = (points - origin) @ axes.T
+        corner = uv.min(axis=0) - pixel
+        index = np.floor((uv - corner) / pixel).astype(np.int64)
+        shape = tuple(int(v) for v in index.max(axis=0) + 2)
+        cells = np.zeros(shape, dtype=bool)
+        cells[index[:, 0], index[:, 1]] = True
+        cells = ndimage.binary_dilation(cells)
+        return cls(origin, axes, up, pixel, corner, cells)
+
+    def covers(self, points: FloatArray) -> np.ndarray:
+        """(n,) whether each point (mm, this face's frame) lies over a covered cell."""
+        index = np.floor(((points - self.origin) @ self.axes.T - self.corner) / self.pixel).astype(np.int64)
+        rows, cols = self.cells.shape
+        inside = (index[:, 0] >= 0) & (index[:, 0] < rows) & (index[:, 1] >= 0) & (index[:, 1] < cols)
+        out = np.zeros(len(points), dtype=bool)
+        out[inside] = self.cells[index[inside, 0], index[inside, 1]]
+        return out
