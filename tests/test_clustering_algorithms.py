@@ -56,13 +56,14 @@ def test_every_method_recovers_well_separated_dies(method: str) -> None:
     assert result.fmi == 1.0 and result.n_clusters == 5 == result.n_dies and not result.mistakes
 
 
-def test_one_wrong_link_merges_components_but_not_average_or_leiden() -> None:
+def test_one_wrong_link_merges_components_but_not_average_consensus_or_leiden() -> None:
     graph, truth = _dies_graph([8, 8, 3], bridge=0.97)
     merged = evaluate(cluster(graph, "components", 0.7).labels, truth)
     assert merged.n_clusters == 2
     assert [(m.kind, sorted(m.members)) for m in merged.mistakes] == [("merged", ["R0", "R1"])]
     for method in ("average", "leiden"):
         assert evaluate(cluster(graph, method, 0.7).labels, truth).fmi == 1.0, method
+    assert evaluate(cluster(graph, "consensus", 0.3).labels, truth).fmi == 1.0
 
 
 def test_components_keep_links_strictly_above_the_threshold() -> None:

@@ -37,8 +37,8 @@ def _cliques(sizes: list[int], seed: int = 0, singletons: int = 0) -> tuple[Prob
     return ProbabilityGraph.from_edges(edges), truth
 
 
-def test_the_registry_holds_the_three_algorithms_in_order() -> None:
-    assert ALGORITHMS[:3] == ["components", "average", "leiden"]
+def test_the_registry_holds_the_four_algorithms_in_order() -> None:
+    assert ALGORITHMS[:4] == ["components", "average", "consensus", "leiden"]
 
 
 @pytest.mark.parametrize("name", ALGORITHMS)

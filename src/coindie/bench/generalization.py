@@ -5,8 +5,9 @@ One row per hoard: a ``study`` hoard (80 faces, 12 dies) made with one axis of t
 (the paper's protocol, scaled). Each hoard goes through what a user runs, scans only, shipped defaults:
 a project (``coindie init``, ``coindie run``: every same-side pair registered once by ``relief``, both the
 relief features and the paper's histogram stored), then for each scorer its probabilities, the per-hoard
-calibration, τ from the mixture (or the silhouette when the scores do not separate), connected components,
-and the hidden labels to judge:
+calibration, the clustering of ``coindie cluster --auto`` (average linkage on the consensus of the calibrated
+probabilities, :mod:`coindie.clustering.consensus`; its cut from the silhouette when the scores do not
+separate), and the hidden labels to judge:
 
 - FMI and ARI of the clusters;
 - the share of same-die pairs refused (registration refused, or nothing to score);
@@ -31,6 +32,8 @@ from coindie.errors import ParameterError
 #: The paper's protocol row: the riedones preset at this scale with the default physics.
 RIEDONES_ROW = "riedones"
 SCORER_NAMES = ("relief", "paper")
+#: How the rows cluster: what ``coindie cluster --auto`` does (consensus of the calibrated probabilities).
+CLUSTERING = "consensus"
 COLUMNS = ("fmi", "ari", "same_refused", "auc", "seconds_per_pair", "clusters", "dies", "threshold")
 
 
@@ -145,7 +148,8 @@ def evaluate_row(row: str, scorer_name: str, scorer: Any, project: Any, hoard: P
         read_clusters,
         select_threshold_unsupervised,
     )
-    from coindie.similarity.calibration import MIXTURE_THRESHOLD, calibrated_probabilities
+    from coindie.clustering.consensus import CONSENSUS_THRESHOLD
+    from coindie.similarity.calibration import calibrated_probabilities
 
     truth = read_clusters(hoard / "labels.csv")
     pairs = project.scored_pairs()
@@ -163,10 +167,10 @@ def evaluate_row(row: str, scorer_name: str, scorer: Any, project: Any, hoard: P
         [(p["source"], p["target"], float(w)) for p, w in zip(pairs, calibrated, strict=True)], faces
     )
     if all_separate:
-        tau, how = MIXTURE_THRESHOLD, "mixture"
+        tau, how = CONSENSUS_THRESHOLD, "mixture"
     else:
-        tau, how = select_threshold_unsupervised(graph).threshold, "silhouette"
-    clusters = cluster(graph, "components", tau)
+        tau, how = select_threshold_unsupervised(graph, CLUSTERING).threshold, "silhouette"
+    clusters = cluster(graph, CLUSTERING, tau)
     scores = evaluate(clusters.labels, truth).scores()
     seconds = [_seconds(p, scorer) for p in pairs if p.get("timings")]
     auc = float(roc_auc_score(same, calibrated)) if 0 < same.sum() < len(same) else float("nan")

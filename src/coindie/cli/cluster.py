@@ -37,7 +37,13 @@ def cluster_command(
             "silhouette on 1 - p.",
         ),
     ] = False,
-    method: Annotated[str, typer.Option(help="components (the paper's), average or leiden.")] = "components",
+    method: Annotated[
+        str | None,
+        typer.Option(
+            help="components (the paper's), average, consensus or leiden; default: consensus with --auto, "
+            "components with a threshold.",
+        ),
+    ] = None,
     as_json: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
 ) -> None:
     """Cluster faces into dies: threshold the same-die probabilities, then group."""
@@ -50,6 +56,10 @@ def cluster_command(
 
     if threshold is not None and auto:
         raise ParameterError("give --threshold or --auto, not both")
+    if method is None:
+        # without labels, the clusters come from the consensus of the hoard's calibrated probabilities;
+        # a threshold given by hand (the paper's τ) is one on the probabilities themselves
+        method = "consensus" if auto else "components"
     graph = _graph(source)
     if auto and source.is_dir():
         from coindie.project import open_project

@@ -35,9 +35,9 @@ def demo(
     workers: Annotated[int, typer.Option(help="Worker processes (0: one per core).")] = 0,
     exhaustive: Annotated[bool, typer.Option("--exhaustive", help="Score every pair of each side.")] = False,
     candidates: Annotated[int, typer.Option(help="Candidates per face (candidate search).")] = DEMO_K,
-    method: Annotated[str, typer.Option(help="Clustering: components (the paper's), average, leiden.")] = (
-        "components"
-    ),
+    method: Annotated[
+        str, typer.Option(help="Clustering: consensus, components (the paper's), average, leiden.")
+    ] = "consensus",
 ) -> None:
     """Synthetic hoard -> project -> run -> clusters per side (threshold without labels) -> evaluation."""
     import os

@@ -1,4 +1,4 @@
-"""Die clusters from a probability graph: three clustering algorithms with one estimator shape.
+"""Die clusters from a probability graph: four clustering algorithms with one estimator shape.
 
 Each algorithm is a :class:`ClusteringAlgorithm` (scikit-learn's shape): its parameters are declared
 through :mod:`coindie.params` and stored on construction, ``fit(graph)`` returns the estimator, with
@@ -12,6 +12,11 @@ one-call shortcut.
 - ``average``: average-linkage agglomerative clustering on the distance ``1 - p`` (unscored pairs at
   distance 1), cut at ``1 - threshold``: two clusters merge only when their faces are, on average, linked
   above the threshold, so one wrong link cannot merge two dies.
+- ``consensus``: average-linkage clustering on the *neighbourhood consensus* of the probabilities
+  (:mod:`coindie.clustering.consensus`): two faces are alike when they are linked to the same faces, so
+  a same-die pair whose own registration or score failed is still joined through its die's other coins,
+  and two dies of one design whose coins share no strong neighbour stay apart. ``threshold`` is the
+  average consensus above which two clusters merge (:data:`CONSENSUS_THRESHOLD`).
 - ``leiden``: community detection (Leiden, modularity with a resolution) on the thresholded graph weighted
   by the probabilities: a component made of two dense groups joined by a few links is cut in two.
 
@@ -31,6 +36,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from coindie.arrays import IntArray
+from coindie.clustering.consensus import CONSENSUS_THRESHOLD, consensus_graph
 from coindie.clustering.graph import ProbabilityGraph
 from coindie.errors import ParameterError
 from coindie.ids import parse_face_id
@@ -152,6 +158,25 @@ class AverageLinkage(ClusteringAlgorithm):
 
 @register_algorithm
 @dataclass(frozen=True, kw_only=True)
+class ConsensusLinkage(ClusteringAlgorithm):
+    """Average-linkage clustering on ``1 - consensus`` (cosine of the faces' probability rows), cut at
+    ``1 - threshold``."""
+
+    NAME: ClassVar[str] = "consensus"
+
+    threshold: float = param(
+        CONSENSUS_THRESHOLD,
+        doc="two clusters merge when the average consensus of their faces is above it",
+        low=0.0,
+        high=1.0,
+    )
+
+    def _raw_labels(self, graph: ProbabilityGraph) -> IntArray:
+        return _average_linkage(consensus_graph(graph), self.threshold)
+
+
+@register_algorithm
+@dataclass(frozen=True, kw_only=True)
 class Leiden(ClusteringAlgorithm):
     """Leiden communities (modularity with a resolution) of the links above the threshold."""
 
@@ -179,7 +204,7 @@ def cluster(
     """Cluster the faces of ``graph`` into dies: ``get_algorithm(method, ...).fit(graph).clustering_``.
 
     Args:
-        method: ``components``, ``average`` or ``leiden`` (see the module's docstring).
+        method: ``components``, ``average``, ``consensus`` or ``leiden`` (see the module's docstring).
         threshold: links with a probability above it count (for ``average``: the cut at distance
             ``1 - threshold``).
         resolution: Leiden's modularity resolution (higher: more, smaller clusters).

@@ -534,10 +534,16 @@ class Project:
 
     def auto_threshold(self, side: str | None = None, method: str = "components") -> tuple[float, str]:
         """The threshold without labels, and how it was chosen: the hoard's own score populations, or,
-        when they do not separate, the best silhouette of the calibrated graph's clusters."""
+        when they do not separate, the best silhouette of the calibrated graph's clusters. ``consensus``
+        clustering cuts the consensus of the calibrated probabilities, not the probabilities."""
         from coindie.clustering import select_threshold_unsupervised
+        from coindie.clustering.algorithms import ConsensusLinkage
+        from coindie.clustering.consensus import CONSENSUS_THRESHOLD
 
         tau = self.mixture_threshold(side)
+        if tau is not None and method == ConsensusLinkage.NAME:
+            # the probabilities are calibrated on the hoard: the cut is on their consensus
+            return CONSENSUS_THRESHOLD, "the consensus of the hoard's calibrated probabilities"
         if tau is not None:
             return tau, "from the hoard's two score populations"
         choice = select_threshold_unsupervised(self.probability_graph(side), method)

@@ -1,0 +1,61 @@
+"""Neighbourhood consensus: faces are alike when they are linked to the same faces (issue 13)."""
+
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+
+from coindie.clustering import ProbabilityGraph, cluster, evaluate
+from coindie.clustering.consensus import CONSENSUS_THRESHOLD, consensus_graph, consensus_matrix
+
+
+def _hoard_graph(sizes: list[int], seed: int, failed: float, weak: tuple[float, float]):
+    """Dies of the given sizes. Each same-die pair is unscored (failed registration) with probability
+    ``failed``, else scored uniformly in ``weak``; different-die pairs score in [0, 0.1] (calibrated: most
+    pairs of a hoard are near 0). Returns the graph and the truth."""
+    rng = np.random.default_rng(seed)
+    truth = {f"L{k + 1:04d}D": f"D{d}" for k, d in enumerate(np.repeat(np.arange(len(sizes)), sizes))}
+    edges = []
+    for a, b in itertools.combinations(truth, 2):
+        if truth[a] == truth[b]:
+            if rng.random() >= failed:
+                edges.append((a, b, rng.uniform(*weak)))
+        else:
+            edges.append((a, b, rng.uniform(0.0, 0.1)))
+    return ProbabilityGraph.from_edges(edges, truth), truth
+
+
+def test_consensus_of_clean_dies_is_one_inside_and_zero_across() -> None:
+    P = np.kron(np.eye(3), np.ones((4, 4)))
+    C = consensus_matrix(P)
+    assert np.allclose(C, P)
+
+
+def test_consensus_is_symmetric_bounded_and_one_on_the_diagonal() -> None:
+    graph, _ = _hoard_graph([5, 4, 2, 1], seed=3, failed=0.3, weak=(0.2, 0.99))
+    C = consensus_matrix(graph.matrix())
+    assert np.allclose(C, C.T) and np.all((C >= 0) & (C <= 1)) and np.allclose(np.diag(C), 1.0)
+    as_graph = consensus_graph(graph)
+    assert as_graph.n_nodes == graph.n_nodes and as_graph.n_edges == graph.n_nodes * (graph.n_nodes - 1) // 2
+
+
+def test_dies_with_failed_and_weak_links_are_kept_together_by_consensus_not_by_components() -> None:
+    """Half of each die's pairs failed to register and the rest score 0.5-0.95: the coins link to each
+    other through the rest of their die. Components at the mixture's 0.9 break the dies into pieces."""
+    consensus_fmi, component_fmi = [], []
+    for seed in range(8):
+        graph, truth = _hoard_graph([10, 8, 6, 1], seed=seed, failed=0.5, weak=(0.5, 0.95))
+        components = evaluate(cluster(graph, "components", 0.9).labels, truth)
+        consensus = evaluate(cluster(graph, "consensus", CONSENSUS_THRESHOLD).labels, truth)
+        assert components.n_clusters > components.n_dies + 10
+        assert consensus.fmi > components.fmi + 0.3
+        consensus_fmi.append(consensus.fmi)
+        component_fmi.append(components.fmi)
+    assert np.mean(consensus_fmi) > 0.85 > 0.5 > np.mean(component_fmi)
+
+
+def test_consensus_keeps_a_singleton_apart() -> None:
+    graph, truth = _hoard_graph([6, 1, 1], seed=1, failed=0.0, weak=(0.9, 0.99))
+    labels = cluster(graph, "consensus", CONSENSUS_THRESHOLD).labels
+    assert len(set(labels.values())) == 3
