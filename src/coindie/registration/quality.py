@@ -100,7 +100,11 @@ class Acceptance(Configurable):
         0.3, unit="mm", low=0, low_open=True, doc="a source point overlaps the target within this distance"
     )
     min_fitness: float = param(
-        0.3, low=0, high=1, doc="smallest share of overlapping source points for a valid result"
+        0.15,
+        low=0,
+        high=1,
+        doc="smallest share of overlapping source points for a valid result (two strikes a third of the "
+        "diameter off centre leave about a fifth of the faces in common)",
     )
     max_tilt: float = param(
         45.0, unit="deg", low=0, high=180, doc="largest angle between the two faces once aligned (footprint)"

@@ -19,8 +19,11 @@ translation in the plane. That 2-D problem is solved globally in a few FFTs:
 2. **Translation and the choice among angles**: for each candidate angle the source image is rotated and
    correlated with the target by *masked* normalised cross-correlation (Padfield, "Masked object registration
    in the Fourier domain", IEEE TIP 2012), which ignores everything outside each coin's footprint (the flan
-   outline and the edge wall differ from coin to coin, the die pattern does not). The best peak gives the
-   angle, the translation, and a score in [-1, 1] that is itself a measure of how alike the two reliefs are.
+   outline and the edge wall differ from coin to coin, the die pattern does not). Peaks are ranked by
+   their significance (:func:`significance`: the NCC's Fisher z weighted by the square root of the overlap),
+   so that two coins struck far off centre, which share a fifth of their faces, are found at their small
+   overlap. The best peak gives the angle, the translation, and its NCC in [-1, 1], itself a measure of
+   how alike the two reliefs are.
 
 Written by hand because no maintained library offers it with a score: scikit-image's masked
 ``phase_cross_correlation`` returns the shift alone, and one score per candidate angle is what decides.
@@ -245,11 +248,15 @@ def align_reliefs(
     *,
     n_angle_peaks: int = 4,
     coarse_step: int = 2,
-    min_overlap: float = 0.3,
+    min_overlap: float = 0.15,
     search: str = "exhaustive",
     angle_step_deg: float = 8.0,
 ) -> PlanarAlignment:
     """Rotation + translation taking the source relief onto the target (see the module docstring).
+
+    Turns and translations are ranked by the :func:`significance` of their correlation, among those whose
+    footprints overlap on at least ``min_overlap`` of the smaller one; the returned ``score`` is the NCC of
+    the chosen pose.
 
     ``search="exhaustive"``: every turn by ``angle_step_deg`` is scored at 1/``coarse_step`` resolution,
     and the ``n_angle_peaks`` best are scored again a third of a step to either side. ``"spectrum"``: the
@@ -266,10 +273,8 @@ def align_reliefs(
         tried = [(a, *_correlate(source, target, a, coarse_step, min_overlap)) for a in candidates]
     else:
         raise ValueError(f"search must be 'exhaustive' or 'spectrum', not {search!r}")
-    angle, coarse_score, coarse_shift = max(tried, key=lambda t: t[1])
-    score, shift = coarse_score, coarse_shift
-    if coarse_step > 1:
-        score, shift = _refine_shift(source, target, angle, coarse_shift, coarse_step)
+    angle, _, coarse_shift = max(tried, key=lambda t: t[1])
+    score, shift = _refine_shift(source, target, angle, coarse_shift, max(coarse_step, 1))
     return PlanarAlignment(
         angle_rad=float(np.arctan2(np.sin(angle), np.cos(angle))),
         shift_mm=shift,
@@ -358,17 +363,30 @@ def correlate_turns(
     min_pixels = min_overlap * min(fixed_mask.sum(), mask.sum())
     # A crop that starts later moves the correlation's origin: back to the full images' shifts.
     origin = float(source_start - target_start)
+    full = max(float(min(fixed_mask.sum(), mask.sum())), 1.0)
     scores = np.empty(len(angles))
     shifts = np.empty((len(angles), 2))
     for first in range(0, len(angles), batch):
         chunk = angles[first : first + batch]
         moving = np.stack([rotate_image(detail, a, centre=centre) for a in chunk])
         moving_mask = np.stack([rotate_image(mask.astype(np.float64), a, centre=centre) > 0.5 for a in chunk])
-        ncc, _ = _masked_ncc_batch(fixed, moving, moving_mask, min_pixels)
+        ncc, overlap = _masked_ncc_batch(fixed, moving, moving_mask, min_pixels)
+        evidence = significance(ncc, overlap / full)
         for i in range(len(chunk)):
-            scores[first + i] = float(ncc[i].max())
-            shifts[first + i] = (_peak_shift(ncc[i], moving.shape[1:]) - origin) * source.pixel_mm * step
+            scores[first + i] = float(evidence[i].max())
+            shifts[first + i] = (_peak_shift(evidence[i], moving.shape[1:]) - origin) * source.pixel_mm * step
     return scores, shifts
+
+
+def significance(ncc: FloatImage, overlap_share: FloatImage) -> FloatImage:
+    """How far a correlation is from chance given the area it was measured on: Fisher's z of the NCC
+    times the square root of the overlap (a share of the smaller footprint). Its sampling spread is about
+    1 / sqrt(pixels), so a high correlation over a small overlap (a strike a third of the diameter off
+    centre on both coins leaves a fifth of the face in common) and a moderate one over the whole face
+    (two dies of one design) are weighed alike; the NCC alone lets small overlaps win by chance, an
+    overlap floor refuses the off-centre pairs."""
+    z = np.arctanh(np.clip(ncc, -0.999, 0.999))
+    return z * np.sqrt(np.clip(overlap_share, 0.0, None))
 
 
 def _cropped_spectra(image: ReliefImage, step: int, moving_shape: tuple[int, ...]) -> FixedSpectra:
