@@ -6,7 +6,7 @@ import itertools
 
 import numpy as np
 
-from coindie.clustering import ProbabilityGraph, cluster, evaluate
+from coindie.clustering import ProbabilityGraph, cluster, evaluate, select_threshold_unsupervised
 from coindie.clustering.consensus import CONSENSUS_THRESHOLD, consensus_graph, consensus_matrix
 
 
@@ -42,12 +42,14 @@ def test_consensus_is_symmetric_bounded_and_one_on_the_diagonal() -> None:
 
 def test_dies_with_failed_and_weak_links_are_kept_together_by_consensus_not_by_components() -> None:
     """Half of each die's pairs failed to register and the rest score 0.5-0.95: the coins link to each
-    other through the rest of their die. Components at the mixture's 0.9 break the dies into pieces."""
+    other through the rest of their die. Components at the mixture's 0.9 break the dies into pieces; the
+    consensus, cut where its silhouette is best (what coindie cluster --auto does), keeps them."""
     consensus_fmi, component_fmi = [], []
     for seed in range(8):
         graph, truth = _hoard_graph([10, 8, 6, 1], seed=seed, failed=0.5, weak=(0.5, 0.95))
         components = evaluate(cluster(graph, "components", 0.9).labels, truth)
-        consensus = evaluate(cluster(graph, "consensus", CONSENSUS_THRESHOLD).labels, truth)
+        cut = select_threshold_unsupervised(graph, "consensus").threshold
+        consensus = evaluate(cluster(graph, "consensus", cut).labels, truth)
         assert components.n_clusters > components.n_dies + 10
         assert consensus.fmi > components.fmi + 0.3
         consensus_fmi.append(consensus.fmi)
@@ -59,3 +61,14 @@ def test_consensus_keeps_a_singleton_apart() -> None:
     graph, truth = _hoard_graph([6, 1, 1], seed=1, failed=0.0, weak=(0.9, 0.99))
     labels = cluster(graph, "consensus", CONSENSUS_THRESHOLD).labels
     assert len(set(labels.values())) == 3
+
+
+def test_the_cut_by_silhouette_follows_the_hoard() -> None:
+    """Clean dies: a cut anywhere between the two populations, and the dies found; dies held together
+    only by their neighbourhoods: a lower cut."""
+    clean, truth = _hoard_graph([8, 6, 4, 1], seed=2, failed=0.0, weak=(0.9, 0.99))
+    weak, _ = _hoard_graph([8, 6, 4, 1], seed=2, failed=0.5, weak=(0.5, 0.95))
+    clean_cut = select_threshold_unsupervised(clean, "consensus").threshold
+    weak_cut = select_threshold_unsupervised(weak, "consensus").threshold
+    assert evaluate(cluster(clean, "consensus", clean_cut).labels, truth).fmi == 1.0
+    assert weak_cut < clean_cut

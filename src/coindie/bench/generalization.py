@@ -6,8 +6,8 @@ One row per hoard: a ``study`` hoard (80 faces, 12 dies) made with one axis of t
 a project (``coindie init``, ``coindie run``: every same-side pair registered once by ``relief``, both the
 relief features and the paper's histogram stored), then for each scorer its probabilities, the per-hoard
 calibration, the clustering of ``coindie cluster --auto`` (average linkage on the consensus of the calibrated
-probabilities, :mod:`coindie.clustering.consensus`; its cut from the silhouette when the scores do not
-separate), and the hidden labels to judge:
+probabilities, :mod:`coindie.clustering.consensus`, cut where the silhouette of its clusters is best),
+and the hidden labels to judge:
 
 - FMI and ARI of the clusters;
 - the share of same-die pairs refused (registration refused, or nothing to score);
@@ -148,7 +148,6 @@ def evaluate_row(row: str, scorer_name: str, scorer: Any, project: Any, hoard: P
         read_clusters,
         select_threshold_unsupervised,
     )
-    from coindie.clustering.consensus import CONSENSUS_THRESHOLD
     from coindie.similarity.calibration import calibrated_probabilities
 
     truth = read_clusters(hoard / "labels.csv")
@@ -166,10 +165,10 @@ def evaluate_row(row: str, scorer_name: str, scorer: Any, project: Any, hoard: P
     graph = ProbabilityGraph.from_edges(
         [(p["source"], p["target"], float(w)) for p, w in zip(pairs, calibrated, strict=True)], faces
     )
-    if all_separate:
-        tau, how = CONSENSUS_THRESHOLD, "mixture"
-    else:
-        tau, how = select_threshold_unsupervised(graph, CLUSTERING).threshold, "silhouette"
+    # as coindie cluster --auto: the consensus cut by silhouette, on probabilities calibrated on the hoard
+    # when its scores separate (how says whether they did)
+    tau = select_threshold_unsupervised(graph, CLUSTERING).threshold
+    how = "mixture" if all_separate else "silhouette"
     clusters = cluster(graph, CLUSTERING, tau)
     scores = evaluate(clusters.labels, truth).scores()
     seconds = [_seconds(p, scorer) for p in pairs if p.get("timings")]

@@ -535,15 +535,18 @@ class Project:
     def auto_threshold(self, side: str | None = None, method: str = "components") -> tuple[float, str]:
         """The threshold without labels, and how it was chosen: the hoard's own score populations, or,
         when they do not separate, the best silhouette of the calibrated graph's clusters. ``consensus``
-        clustering cuts the consensus of the calibrated probabilities, not the probabilities."""
+        clustering cuts the consensus of the calibrated probabilities where the silhouette of its own
+        clusters is best."""
         from coindie.clustering import select_threshold_unsupervised
         from coindie.clustering.algorithms import ConsensusLinkage
-        from coindie.clustering.consensus import CONSENSUS_THRESHOLD
 
         tau = self.mixture_threshold(side)
-        if tau is not None and method == ConsensusLinkage.NAME:
-            # the probabilities are calibrated on the hoard: the cut is on their consensus
-            return CONSENSUS_THRESHOLD, "the consensus of the hoard's calibrated probabilities"
+        if method == ConsensusLinkage.NAME:
+            # the probabilities are calibrated on the hoard (when they separate): the cut is on their
+            # consensus, where the hoard's own clusters say
+            choice = select_threshold_unsupervised(self.probability_graph(side), method)
+            how = f"consensus cut chosen by silhouette {choice.score:.3f}"
+            return choice.threshold, how + ("" if tau is not None else " (the scores do not separate)")
         if tau is not None:
             return tau, "from the hoard's two score populations"
         choice = select_threshold_unsupervised(self.probability_graph(side), method)
