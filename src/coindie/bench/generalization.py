@@ -142,6 +142,7 @@ def evaluate_row(row: str, scorer_name: str, scorer: Any, project: Any, hoard: P
     from sklearn.metrics import roc_auc_score
 
     from coindie.clustering import (
+        Clustering,
         ProbabilityGraph,
         cluster,
         evaluate,
@@ -165,11 +166,17 @@ def evaluate_row(row: str, scorer_name: str, scorer: Any, project: Any, hoard: P
     graph = ProbabilityGraph.from_edges(
         [(p["source"], p["target"], float(w)) for p, w in zip(pairs, calibrated, strict=True)], faces
     )
-    # as coindie cluster --auto: the consensus cut by silhouette, on probabilities calibrated on the hoard
-    # when its scores separate (how says whether they did)
-    tau = select_threshold_unsupervised(graph, CLUSTERING).threshold
-    how = "mixture" if all_separate else "silhouette"
-    clusters = cluster(graph, CLUSTERING, tau)
+    # as coindie cluster --auto: each side cut where the silhouette of its consensus clusters is best, on
+    # probabilities calibrated on the hoard when its scores separate (how says whether they did)
+    labels: dict[str, str] = {}
+    cuts = []
+    for side in sorted({p["side"] for p in pairs}):
+        one = graph.subgraph(s.face_id for s in project.scans("ok") if s.side == side)
+        tau = select_threshold_unsupervised(one, CLUSTERING).threshold
+        cuts.append(tau)
+        labels |= {f: f"{side}{k}" for f, k in cluster(one, CLUSTERING, tau).labels.items()}
+    tau, how = float(np.mean(cuts)), "mixture" if all_separate else "silhouette"
+    clusters = Clustering({f: int(k[1:]) * 2 + (k[0] == "R") for f, k in labels.items()}, CLUSTERING)
     scores = evaluate(clusters.labels, truth).scores()
     seconds = [_seconds(p, scorer) for p in pairs if p.get("timings")]
     auc = float(roc_auc_score(same, calibrated)) if 0 < same.sum() < len(same) else float("nan")

@@ -47,12 +47,7 @@ def cluster_command(
     as_json: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
 ) -> None:
     """Cluster faces into dies: threshold the same-die probabilities, then group."""
-    from coindie.clustering import (
-        PAPER_THRESHOLD,
-        get_algorithm,
-        select_threshold_unsupervised,
-        write_clusters,
-    )
+    from coindie.clustering import PAPER_THRESHOLD, get_algorithm, select_threshold_unsupervised
 
     if threshold is not None and auto:
         raise ParameterError("give --threshold or --auto, not both")
@@ -62,10 +57,10 @@ def cluster_command(
         method = "consensus" if auto else "components"
     graph = _graph(source)
     if auto and source.is_dir():
-        from coindie.project import open_project
-
-        tau, how = open_project(source).auto_threshold(method=method)
-    elif auto:
+        clusters, tau, how = _project_sides(source, method)
+        _report(clusters, out, method, tau, how, graph.n_nodes, as_json)
+        return
+    if auto:
         choice = select_threshold_unsupervised(graph, method)
         tau, how = choice.threshold, f"chosen by silhouette {choice.score:.3f}"
     else:
@@ -79,17 +74,61 @@ def cluster_command(
 
         clusters = corrected_clusters(graph, corrections, tau, method)
         how += f", with {len(corrections.active)} expert edits"
+    _report(clusters, out, method, tau, how, graph.n_nodes, as_json)
+
+
+def _report(clusters, out: Path, method: str, tau, how: str, n_faces: int, as_json: bool) -> None:  # noqa: ANN001
+    """Write the clusters and say what was done (``tau``: a number, or one per side)."""
+    from coindie.clustering import write_clusters
+
     write_clusters(clusters, out)
     sizes = [len(c) for c in clusters.clusters()]
     if as_json:
         report = {"out": str(out), "method": method, "threshold": tau, "threshold_from": how,
-                  "n_faces": graph.n_nodes, "n_clusters": clusters.n_clusters, "sizes": sizes}  # fmt: skip
+                  "n_faces": n_faces, "n_clusters": clusters.n_clusters, "sizes": sizes}  # fmt: skip
         typer.echo(json.dumps(report))
         return
+    shown = tau if isinstance(tau, dict) else f"{tau:g}"
     typer.echo(
-        f"{out}: {graph.n_nodes} faces in {clusters.n_clusters} clusters ({method}, threshold {tau:g}, "
+        f"{out}: {n_faces} faces in {clusters.n_clusters} clusters ({method}, threshold {shown}, "
         f"{how}); largest {', '.join(map(str, sizes[:8]))}"
     )
+
+
+def _project_sides(folder: Path, method: str):  # noqa: ANN202
+    """A project's clusters without labels, side by side: each side's own threshold (its own hoard of
+    scores: obverse and reverse dies wear, and score, differently), the experts' edits of its faces
+    replayed. Returns the clusters, the thresholds by side and how they were chosen."""
+    from coindie.clustering import Clustering, get_algorithm
+    from coindie.clustering.corrections import corrected_clusters, replay
+    from coindie.project import open_project
+    from coindie.project.edits import EditLog
+
+    project = open_project(folder)
+    labels: dict[str, int] = {}
+    taus: dict[str, float] = {}
+    notes = []
+    log = EditLog.of_project(project.folder)
+    try:
+        edits = log.edits() if log.last_seq() else []
+        for side in ("D", "R"):
+            graph = project.probability_graph(side)
+            if graph.n_nodes == 0:
+                continue
+            tau, how = project.auto_threshold(side, method) if graph.n_nodes >= 3 else (0.5, "too few faces")
+            on_side = [e for e in edits if e.touched() <= set(graph.nodes)]
+            if on_side:
+                clusters = corrected_clusters(graph, replay(graph, on_side), tau, method)
+                how += f", with {len(on_side)} expert edits"
+            else:
+                clusters = get_algorithm(method, threshold=tau).fit(graph).clustering_
+            offset = len(set(labels.values()))
+            labels |= {face: offset + label for face, label in clusters.labels.items()}
+            taus[side] = tau
+            notes.append(f"{side}: {how}")
+    finally:
+        log.close()
+    return Clustering(labels, method), taus, "; ".join(notes)
 
 
 def _graph(source: Path):  # noqa: ANN202

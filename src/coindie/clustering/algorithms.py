@@ -12,11 +12,12 @@ one-call shortcut.
 - ``average``: average-linkage agglomerative clustering on the distance ``1 - p`` (unscored pairs at
   distance 1), cut at ``1 - threshold``: two clusters merge only when their faces are, on average, linked
   above the threshold, so one wrong link cannot merge two dies.
-- ``consensus``: average-linkage clustering on the *neighbourhood consensus* of the probabilities
-  (:mod:`coindie.clustering.consensus`): two faces are alike when they are linked to the same faces, so
+- ``consensus``: average-linkage clustering on the probabilities averaged with their *neighbourhood
+  consensus* (:mod:`coindie.clustering.consensus`): two faces are alike when they are linked to the same
+  faces (and to faces linked to the same faces), so
   a same-die pair whose own registration or score failed is still joined through its die's other coins,
   and two dies of one design whose coins share no strong neighbour stay apart. ``threshold`` is the
-  average consensus above which two clusters merge (:data:`CONSENSUS_THRESHOLD`).
+  average similarity above which two clusters merge (:data:`CONSENSUS_THRESHOLD`).
 - ``leiden``: community detection (Leiden, modularity with a resolution) on the thresholded graph weighted
   by the probabilities: a component made of two dense groups joined by a few links is cut in two.
 
@@ -36,7 +37,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from coindie.arrays import IntArray
-from coindie.clustering.consensus import CONSENSUS_THRESHOLD, consensus_graph
+from coindie.clustering.consensus import CONSENSUS_DEPTH, CONSENSUS_THRESHOLD, consensus_graph
 from coindie.clustering.graph import ProbabilityGraph
 from coindie.errors import ParameterError
 from coindie.ids import parse_face_id
@@ -159,8 +160,8 @@ class AverageLinkage(ClusteringAlgorithm):
 @register_algorithm
 @dataclass(frozen=True, kw_only=True)
 class ConsensusLinkage(ClusteringAlgorithm):
-    """Average-linkage clustering on ``1 - consensus`` (cosine of the faces' probability rows), cut at
-    ``1 - threshold``."""
+    """Average-linkage clustering on ``1 -`` :func:`~coindie.clustering.consensus.consensus_similarity`
+    (the probabilities averaged with their consensus, ``depth`` steps), cut at ``1 - threshold``."""
 
     NAME: ClassVar[str] = "consensus"
 
@@ -171,8 +172,12 @@ class ConsensusLinkage(ClusteringAlgorithm):
         high=1.0,
     )
 
+    depth: int = param(
+        CONSENSUS_DEPTH, doc="consensus steps averaged with the probabilities", low=1, high=4
+    )
+
     def _raw_labels(self, graph: ProbabilityGraph) -> IntArray:
-        return _average_linkage(consensus_graph(graph), self.threshold)
+        return _average_linkage(consensus_graph(graph, self.depth), self.threshold)
 
 
 @register_algorithm

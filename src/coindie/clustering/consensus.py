@@ -29,6 +29,11 @@ from coindie.clustering.graph import ProbabilityGraph
 #: coindie chooses the cut on each hoard by silhouette (:func:`coindie.clustering.
 #: select_threshold_unsupervised`): 0.25-0.37 on synthetic all-hard hoards, 0.46-0.63 on the others.
 CONSENSUS_THRESHOLD = 0.4
+#: Consensus steps averaged with the probabilities (:func:`consensus_similarity`). One step (the mean of
+#: the probabilities and their consensus) left the all-hard synthetic hoards at FMI 0.79-0.80; two reach
+#: 0.85-0.96 and keep the single-axis rows at 0.98-1.00; three merged dies of one design (0.87 on a cupped
+#: hoard with the consensus alone).
+CONSENSUS_DEPTH = 2
 
 
 def consensus_matrix(P: FloatArray) -> FloatArray:
@@ -49,10 +54,22 @@ def consensus_matrix(P: FloatArray) -> FloatArray:
     return C
 
 
-def consensus_graph(graph: ProbabilityGraph) -> ProbabilityGraph:
-    """The complete graph over ``graph``'s faces whose weights are the consensus of each pair (faces
-    with a common neighbour get a link even where their own pair was never scored)."""
+def consensus_similarity(P: FloatArray, depth: int = CONSENSUS_DEPTH) -> FloatArray:
+    """The mean of the probabilities ``P`` and of their consensus taken ``depth`` times over (the
+    consensus of the consensus, ...): the evidence that two faces share a die at one step (their own
+    pair), two (common neighbours) and more (neighbours of neighbours), each in [0, 1]."""
+    P = np.array(P, dtype=np.float64)
+    np.fill_diagonal(P, 1.0)
+    layers = [P]
+    for _ in range(depth):
+        layers.append(consensus_matrix(layers[-1]))
+    return np.mean(layers, axis=0)
+
+
+def consensus_graph(graph: ProbabilityGraph, depth: int = CONSENSUS_DEPTH) -> ProbabilityGraph:
+    """The complete graph over ``graph``'s faces weighted by :func:`consensus_similarity` (faces with a
+    common neighbour get a link even where their own pair was never scored)."""
     n = graph.n_nodes
-    C = consensus_matrix(graph.matrix())
+    C = consensus_similarity(graph.matrix(), depth)
     i, j = np.triu_indices(n, k=1)
     return ProbabilityGraph(graph.nodes, i.astype(np.int64), j.astype(np.int64), C[i, j])
