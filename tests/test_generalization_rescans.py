@@ -27,8 +27,11 @@ def _base_physics():
 
 
 def _study(folder: Path, physics) -> dict:  # noqa: ANN001
-    """Hoard -> project -> run -> clusters at the hoard's own threshold, as a user runs it."""
-    from coindie.clustering import cluster, read_clusters, select_threshold_unsupervised
+    """Hoard -> project -> run -> ``coindie cluster --auto``, as a user runs it."""
+    from typer.testing import CliRunner
+
+    from coindie.cli import app
+    from coindie.clustering import Clustering, read_clusters
     from coindie.project import init_project
     from coindie.project.run import RunConfig, run_project
     from coindie.synth.hoard import synthesize
@@ -37,12 +40,12 @@ def _study(folder: Path, physics) -> dict:  # noqa: ANN001
     project, _ = init_project(folder / "project", folder / "hoard")
     lines: list[str] = []
     run_project(project, RunConfig(mode="exhaustive", workers=1), echo=lines.append)
-    graph = project.probability_graph()
-    tau = project.mixture_threshold()
-    if tau is None:
-        tau = select_threshold_unsupervised(graph).threshold
+    out = folder / "clusters.csv"
+    result = CliRunner().invoke(app, ["cluster", str(folder / "project"), "--auto", "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    clusters = Clustering({face: int(label) for face, label in read_clusters(out).items()})
     truth = read_clusters(folder / "hoard" / "labels.csv")
-    return {"clusters": cluster(graph, "components", tau), "truth": truth, "project": project}
+    return {"clusters": clusters, "truth": truth, "project": project}
 
 
 @pytest.fixture(scope="module")
