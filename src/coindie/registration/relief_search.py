@@ -510,5 +510,7 @@ def _parabolic_offset_2d(values: FloatImage, index: tuple[int, ...], axis: int) 
     lo[axis] -= 1
     hi[axis] += 1
     left, centre, right = values[tuple(lo)], values[tuple(i)], values[tuple(hi)]
+    if not np.isfinite(left) or not np.isfinite(right):  # a neighbour left unweighed: no sub-pixel part
+        return 0.0
     curvature = left - 2.0 * centre + right
     return 0.0 if curvature >= 0 else float(0.5 * (left - right) / curvature)
