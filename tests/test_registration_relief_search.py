@@ -15,6 +15,7 @@ from coindie.registration.relief_search import (
     rotation_candidates,
     significance,
 )
+from coindie.registration.relief_search import _evidence_near_peak
 
 PIXEL = 0.1  # mm
 DIE_PX = 400
@@ -174,7 +175,19 @@ def test_strikes_far_off_centre_are_found_at_their_small_overlap(die_field: np.n
 
 
 def test_significance_weighs_the_overlap() -> None:
-    """The same correlation over four times the area is twice as far from chance; chance stays at 0."""
-    r = np.array([0.5, 0.5, 0.0])
-    z = significance(r, np.array([0.25, 1.0, 1.0]))
-    assert z[1] == pytest.approx(2 * z[0]) and z[2] == 0.0
+    """The same correlation over four times the area is twice as far from chance; chance stays at 0; a
+    turned mask a pixel larger than the smaller footprint counts as the whole of it."""
+    r = np.array([0.5, 0.5, 0.0, 0.5])
+    z = significance(r, np.array([0.25, 1.0, 1.0, 1.002]))
+    assert z[1] == pytest.approx(2 * z[0]) and z[2] == 0.0 and z[3] == z[1]
+
+
+def test_the_peak_is_found_when_the_overlap_share_exceeds_one() -> None:
+    """The best correlation at an overlap share a hair above 1 (a turned mask holds a pixel more than the
+    footprint it is compared with) is still the peak; it left no candidate once, and the pair failed."""
+    ncc = np.zeros((5, 5))
+    ncc[2, 3] = 0.9
+    share = np.full((5, 5), 0.5)
+    share[2, 3] = 1.001
+    evidence = _evidence_near_peak(ncc, share)
+    assert np.unravel_index(int(np.argmax(evidence)), evidence.shape) == (2, 3)

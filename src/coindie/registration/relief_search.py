@@ -387,7 +387,7 @@ def _evidence_near_peak(ncc: FloatImage, overlap_share: FloatImage) -> FloatImag
     peak and its 3 x 3 neighbourhood (for the sub-pixel parabola) are then exact."""
     first = int(np.argmax(ncc))
     bound = float(significance(ncc.flat[first], overlap_share.flat[first]))
-    candidates = np.flatnonzero(ncc.ravel() >= np.tanh(max(bound, 0.0)))
+    candidates = np.union1d(np.flatnonzero(ncc.ravel() >= np.tanh(max(bound, 0.0))), [first])
     weighed = significance(ncc.ravel()[candidates], overlap_share.ravel()[candidates])
     peak = np.unravel_index(int(candidates[int(np.argmax(weighed))]), ncc.shape)
     evidence = np.full(ncc.shape, -np.inf)
@@ -406,7 +406,8 @@ def significance(ncc: FloatImage, overlap_share: FloatImage) -> FloatImage:
     (two dies of one design) are weighed alike; the NCC alone lets small overlaps win by chance, an
     overlap floor refuses the off-centre pairs."""
     z = np.arctanh(np.clip(ncc, -0.999, 0.999))
-    return z * np.sqrt(np.clip(overlap_share, 0.0, None))
+    # a turned mask can hold a pixel more than the smaller footprint: a share is at most 1
+    return z * np.sqrt(np.clip(overlap_share, 0.0, 1.0))
 
 
 def _cropped_spectra(image: ReliefImage, step: int, moving_shape: tuple[int, ...]) -> FixedSpectra:
