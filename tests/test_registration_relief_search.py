@@ -8,6 +8,7 @@ from scipy import ndimage
 
 from coindie.registration.relief_search import (
     ReliefImage,
+    _evidence_near_peak,
     align_reliefs,
     correlate_turns,
     masked_ncc,
@@ -15,7 +16,6 @@ from coindie.registration.relief_search import (
     rotation_candidates,
     significance,
 )
-from coindie.registration.relief_search import _evidence_near_peak
 
 PIXEL = 0.1  # mm
 DIE_PX = 400
