@@ -142,9 +142,9 @@ def evaluate_row(row: str, scorer_name: str, scorer: Any, project: Any, hoard: P
     from sklearn.metrics import roc_auc_score
 
     from coindie.clustering import (
-        Clustering,
         ProbabilityGraph,
         cluster,
+        combined,
         evaluate,
         read_clusters,
         select_threshold_unsupervised,
@@ -168,15 +168,13 @@ def evaluate_row(row: str, scorer_name: str, scorer: Any, project: Any, hoard: P
     )
     # as coindie cluster --auto: each side cut where the silhouette of its consensus clusters is best, on
     # probabilities calibrated on the hoard when its scores separate (how says whether they did)
-    labels: dict[str, str] = {}
-    cuts = []
+    parts, cuts = [], []
     for side in sorted({p["side"] for p in pairs}):
         one = graph.subgraph(s.face_id for s in project.scans("ok") if s.side == side)
-        tau = select_threshold_unsupervised(one, CLUSTERING).threshold
-        cuts.append(tau)
-        labels |= {f: f"{side}{k}" for f, k in cluster(one, CLUSTERING, tau).labels.items()}
+        cuts.append(select_threshold_unsupervised(one, CLUSTERING).threshold)
+        parts.append(cluster(one, CLUSTERING, cuts[-1]))
     tau, how = float(np.mean(cuts)), "mixture" if all_separate else "silhouette"
-    clusters = Clustering({f: int(k[1:]) * 2 + (k[0] == "R") for f, k in labels.items()}, CLUSTERING)
+    clusters = combined(parts, CLUSTERING)
     scores = evaluate(clusters.labels, truth).scores()
     seconds = [_seconds(p, scorer) for p in pairs if p.get("timings")]
     auc = float(roc_auc_score(same, calibrated)) if 0 < same.sum() < len(same) else float("nan")

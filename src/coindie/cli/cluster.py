@@ -96,39 +96,19 @@ def _report(clusters, out: Path, method: str, tau, how: str, n_faces: int, as_js
 
 
 def _project_sides(folder: Path, method: str):  # noqa: ANN202
-    """A project's clusters without labels, side by side: each side's own threshold (its own hoard of
-    scores: obverse and reverse dies wear, and score, differently), the experts' edits of its faces
-    replayed. Returns the clusters, the thresholds by side and how they were chosen."""
-    from coindie.clustering import Clustering, get_algorithm
-    from coindie.clustering.corrections import corrected_clusters, replay
-    from coindie.project import open_project
-    from coindie.project.edits import EditLog
+    """A project's clusters without labels, side by side (:func:`coindie.numismatics.sources.project_dies`:
+    each side's own threshold, its experts' edits replayed). Returns the clusters, the thresholds by side
+    and how they were chosen."""
+    from coindie.clustering import Clustering, combined
+    from coindie.numismatics.sources import project_dies
 
-    project = open_project(folder)
-    labels: dict[str, int] = {}
-    taus: dict[str, float] = {}
-    notes = []
-    log = EditLog.of_project(project.folder)
-    try:
-        edits = log.edits() if log.last_seq() else []
-        for side in ("D", "R"):
-            graph = project.probability_graph(side)
-            if graph.n_nodes == 0:
-                continue
-            tau, how = project.auto_threshold(side, method) if graph.n_nodes >= 3 else (0.5, "too few faces")
-            on_side = [e for e in edits if e.touched() <= set(graph.nodes)]
-            if on_side:
-                clusters = corrected_clusters(graph, replay(graph, on_side), tau, method)
-                how += f", with {len(on_side)} expert edits"
-            else:
-                clusters = get_algorithm(method, threshold=tau).fit(graph).clustering_
-            offset = len(set(labels.values()))
-            labels |= {face: offset + label for face, label in clusters.labels.items()}
-            taus[side] = tau
-            notes.append(f"{side}: {how}")
-    finally:
-        log.close()
-    return Clustering(labels, method), taus, "; ".join(notes)
+    sides = project_dies(folder, method, auto=True)
+    parts = []
+    for one in sides.values():
+        order = {die: k for k, die in enumerate(dict.fromkeys(sorted(one.dies.values())))}
+        parts.append(Clustering({face: order[die] for face, die in one.dies.items()}, method))
+    how = "; ".join(f"{side}: {one.source}" for side, one in sides.items())
+    return combined(parts, method), {side: one.threshold for side, one in sides.items()}, how
 
 
 def _graph(source: Path):  # noqa: ANN202

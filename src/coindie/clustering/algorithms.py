@@ -172,9 +172,7 @@ class ConsensusLinkage(ClusteringAlgorithm):
         high=1.0,
     )
 
-    depth: int = param(
-        CONSENSUS_DEPTH, doc="consensus steps averaged with the probabilities", low=1, high=4
-    )
+    depth: int = param(CONSENSUS_DEPTH, doc="consensus steps averaged with the probabilities", low=1, high=4)
 
     def _raw_labels(self, graph: ProbabilityGraph) -> IntArray:
         return _average_linkage(consensus_graph(graph, self.depth), self.threshold)
@@ -275,6 +273,16 @@ def _relabelled(raw: IntArray) -> list[int]:
 # ------------------------------------------------------------------------------------------------ files
 
 
+def combined(parts: Iterable[Clustering], method: str = "") -> Clustering:
+    """One clustering of disjoint sets of faces (a hoard's sides) clustered apart: each part's labels
+    moved past the previous parts' so that no two parts share a label."""
+    labels: dict[str, int] = {}
+    for part in parts:
+        offset = len(set(labels.values()))
+        labels |= {face: offset + label for face, label in part.labels.items()}
+    return Clustering(labels, method)
+
+
 def write_clusters(clustering: Clustering | Mapping[str, int | str], path: str | Path) -> Path:
     """Write the paper's cluster CSV: header ``name, die``, one face per line, faces of one cluster together
     (largest cluster first)."""
@@ -325,6 +333,7 @@ __all__ = [
     "algorithm_class",
     "cluster",
     "clusters_from_labels",
+    "combined",
     "get_algorithm",
     "list_algorithms",
     "read_clusters",

@@ -19,6 +19,8 @@ over a probability graph.
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import numpy as np
 
 from coindie.arrays import FloatArray
@@ -66,9 +68,12 @@ def consensus_similarity(P: FloatArray, depth: int = CONSENSUS_DEPTH) -> FloatAr
     return np.mean(layers, axis=0)
 
 
+@lru_cache(maxsize=2)
 def consensus_graph(graph: ProbabilityGraph, depth: int = CONSENSUS_DEPTH) -> ProbabilityGraph:
     """The complete graph over ``graph``'s faces weighted by :func:`consensus_similarity` (faces with a
-    common neighbour get a link even where their own pair was never scored)."""
+    common neighbour get a link even where their own pair was never scored). Kept for the last two graphs
+    (by identity): choosing the cut and clustering at it read the same consensus, and its average-linkage
+    tree (cached in turn) is cut once per candidate."""
     n = graph.n_nodes
     C = consensus_similarity(graph.matrix(), depth)
     i, j = np.triu_indices(n, k=1)

@@ -1,7 +1,7 @@
 """Where the dies come from: a project's clusters, or label / cluster CSVs (``name, die`` or
 ``coin_id,die_id``), split by side (``D`` obverses, ``R`` reverses).
 
-A project's clusters are made by the same library calls as ``coindie cluster PROJECT``
+A project's clusters are made here for ``coindie cluster PROJECT --auto`` as for the numismatic results
 (:meth:`coindie.project.Project.probability_graph` then :func:`coindie.clustering.cluster`, the paper's
 connected components at its threshold 0.95 unless told otherwise), one side at a time, so that a face is
 never linked across sides.
@@ -25,6 +25,7 @@ class SideDies:
     side: str
     dies: dict[str, str]
     source: str
+    threshold: float = float("nan")  # the threshold a project's clusters were cut at (NaN: read from a file)
 
     def members(self) -> dict[str, list[str]]:
         """The faces of each die, largest die first (then by label)."""
@@ -78,13 +79,13 @@ def project_dies(
             tau = PAPER_THRESHOLD if threshold is None else threshold
             how = "the paper's" if threshold is None else "given"
             if auto and graph.n_nodes >= 3:
-                tau, how = project.auto_threshold(side, method)
+                tau, how = project.auto_threshold(side, method, graph)
             # the log covers both sides: each side replays the edits about its own faces
             on_side = set(graph.nodes)
             edits = [e for e in log.edits() if e.touched() <= on_side]
             clusters = corrected_clusters(graph, replay(graph, edits), tau, method)
             labels = {face: f"{side}{label}" for face, label in clusters.labels.items()}
-            out[side] = SideDies(side, labels, f"{project.folder} ({method}, threshold {tau:g}, {how})")
+            out[side] = SideDies(side, labels, f"{project.folder} ({method}, threshold {tau:g}, {how})", tau)
     finally:
         log.close()
     if not out:

@@ -532,24 +532,27 @@ class Project:
             return MIXTURE_THRESHOLD
         return None
 
-    def auto_threshold(self, side: str | None = None, method: str = "components") -> tuple[float, str]:
+    def auto_threshold(
+        self, side: str | None = None, method: str = "components", graph: ProbabilityGraph | None = None
+    ) -> tuple[float, str]:
         """The threshold without labels, and how it was chosen: the hoard's own score populations, or,
         when they do not separate, the best silhouette of the calibrated graph's clusters. ``consensus``
         clustering cuts the consensus of the calibrated probabilities where the silhouette of its own
-        clusters is best."""
+        clusters is best. ``graph``: :meth:`probability_graph` of ``side`` when the caller holds it
+        already."""
         from coindie.clustering import select_threshold_unsupervised
         from coindie.clustering.algorithms import ConsensusLinkage
 
         tau = self.mixture_threshold(side)
+        if tau is not None and method != ConsensusLinkage.NAME:
+            return tau, "from the hoard's two score populations"
+        graph = self.probability_graph(side) if graph is None else graph
+        choice = select_threshold_unsupervised(graph, method)
         if method == ConsensusLinkage.NAME:
             # the probabilities are calibrated on the hoard (when they separate): the cut is on their
             # consensus, where the hoard's own clusters say
-            choice = select_threshold_unsupervised(self.probability_graph(side), method)
             how = f"consensus cut chosen by silhouette {choice.score:.3f}"
             return choice.threshold, how + ("" if tau is not None else " (the scores do not separate)")
-        if tau is not None:
-            return tau, "from the hoard's two score populations"
-        choice = select_threshold_unsupervised(self.probability_graph(side), method)
         return choice.threshold, f"chosen by silhouette {choice.score:.3f} (the scores do not separate)"
 
     def calibration(self, side: str, params_hash: str | None = None) -> HoardCalibration:
