@@ -33,8 +33,9 @@ def cluster_command(
         bool,
         typer.Option(
             "--auto",
-            help="Choose the threshold without labels: a project's own score populations, else the best "
-            "silhouette on 1 - p.",
+            help="Choose the threshold without labels: consensus clustering cut where the modularity of "
+            "its clusters is best (a project: each side, then again with each face's pull taken off); "
+            "other methods: a project's own score populations, else the best silhouette on 1 - p.",
         ),
     ] = False,
     method: Annotated[
@@ -62,7 +63,7 @@ def cluster_command(
         return
     if auto:
         choice = select_threshold_unsupervised(graph, method)
-        tau, how = choice.threshold, f"chosen by silhouette {choice.score:.3f}"
+        tau, how = choice.threshold, f"chosen by {choice.criterion} {choice.score:.3f}"
     else:
         tau = PAPER_THRESHOLD if threshold is None else threshold
         how = "given" if threshold is not None else "the paper's"

@@ -28,8 +28,8 @@ from coindie.clustering.graph import ProbabilityGraph
 
 #: Average consensus above which two clusters of faces merge (``consensus`` clustering) when no cut is
 #: chosen: the two faces' strong links overlap in more than about 0.4 of their weight. Without labels,
-#: coindie chooses the cut on each hoard by silhouette (:func:`coindie.clustering.
-#: select_threshold_unsupervised`): 0.25-0.37 on synthetic all-hard hoards, 0.46-0.63 on the others.
+#: coindie chooses the cut on each hoard by the modularity of its clusters (:func:`coindie.clustering.
+#: select_threshold_unsupervised`): 0.10-0.18 on synthetic all-hard hoards, 0.34 on the real beard graph.
 CONSENSUS_THRESHOLD = 0.4
 #: Consensus steps averaged with the probabilities (:func:`consensus_similarity`). One step (the mean of
 #: the probabilities and their consensus) left the all-hard synthetic hoards at FMI 0.79-0.80; two reach
