@@ -6,8 +6,9 @@ One row per hoard: a ``study`` hoard (80 faces, 12 dies) made with one axis of t
 a project (``coindie init``, ``coindie run``: every same-side pair registered once by ``relief``, both the
 relief features and the paper's histogram stored), then for each scorer its probabilities, the per-hoard
 calibration, the clustering of ``coindie cluster --auto`` (average linkage on the consensus of the calibrated
-probabilities, :mod:`coindie.clustering.consensus`, cut where the silhouette of its clusters is best),
-and the hidden labels to judge:
+probabilities, :mod:`coindie.clustering.consensus`, cut where the modularity of its clusters is best; then
+each face's pull on its scores taken off, :mod:`coindie.similarity.face_effects`, and cut again), and the
+hidden labels to judge:
 
 - FMI and ARI of the clusters;
 - the share of same-die pairs refused (registration refused, or nothing to score);
@@ -141,15 +142,7 @@ def row_project(folder: Path, hoard: Path, workers: int) -> Any:
 def evaluate_row(row: str, scorer_name: str, scorer: Any, project: Any, hoard: Path) -> RowResult:
     from sklearn.metrics import roc_auc_score
 
-    from coindie.clustering import (
-        ProbabilityGraph,
-        cluster,
-        combined,
-        evaluate,
-        read_clusters,
-        select_threshold_unsupervised,
-    )
-    from coindie.similarity.calibration import calibrated_probabilities
+    from coindie.clustering import cluster, combined, evaluate, read_clusters, select_threshold_unsupervised
 
     truth = read_clusters(hoard / "labels.csv")
     pairs = project.scored_pairs()
@@ -157,20 +150,23 @@ def evaluate_row(row: str, scorer_name: str, scorer: Any, project: Any, hoard: P
     raw = np.array([_probability(p, scorer) for p in pairs])
     valid = np.array([_scored(p, scorer) for p in pairs], dtype=bool)
     same = np.array([truth[p["source"]] == truth[p["target"]] for p in pairs], dtype=bool)
-    calibrated, all_separate = np.zeros(len(pairs)), True
     populations = getattr(scorer, "populations", None) or None
-    for side in sorted({p["side"] for p in pairs}):
-        on = np.array([p["side"] == side for p in pairs], dtype=bool)
-        calibrated[on], calibration = calibrated_probabilities(raw[on], valid[on], prior=populations)
-        all_separate &= calibration.separates
-    graph = ProbabilityGraph.from_edges(
-        [(p["source"], p["target"], float(w)) for p, w in zip(pairs, calibrated, strict=True)], faces
-    )
-    # as coindie cluster --auto: each side cut where the silhouette of its consensus clusters is best, on
-    # probabilities calibrated on the hoard when its scores separate (how says whether they did)
+    first, all_separate = _calibrated(pairs, raw, valid, populations)
+    sides = sorted({p["side"] for p in pairs})
+    on_side = {side: [s.face_id for s in project.scans("ok") if s.side == side] for side in sides}
+    # as coindie cluster --auto (Project.auto_graph): each side cut where the modularity of its consensus
+    # clusters is best, on probabilities calibrated on the hoard; then each face's pull fitted on the pairs
+    # across those clusters and taken off, calibrated and cut again
+    graph = _graph(pairs, first, faces)
+    labels = {}
+    for side in sides:
+        one = graph.subgraph(on_side[side])
+        labels |= cluster(one, CLUSTERING, select_threshold_unsupervised(one, CLUSTERING).threshold).labels
+    calibrated, _ = _calibrated(pairs, raw, valid, populations, across=labels)
+    graph = _graph(pairs, calibrated, faces)
     parts, cuts = [], []
-    for side in sorted({p["side"] for p in pairs}):
-        one = graph.subgraph(s.face_id for s in project.scans("ok") if s.side == side)
+    for side in sides:
+        one = graph.subgraph(on_side[side])
         cuts.append(select_threshold_unsupervised(one, CLUSTERING).threshold)
         parts.append(cluster(one, CLUSTERING, cuts[-1]))
     tau, how = float(np.mean(cuts)), "mixture" if all_separate else "silhouette"
@@ -183,6 +179,38 @@ def evaluate_row(row: str, scorer_name: str, scorer: Any, project: Any, hoard: P
         float((~valid & same).sum() / max(1, same.sum())), auc, float(np.median(seconds)) if seconds else 0.0,
         int(scores["n_clusters"]), int(scores["n_dies"]), float(tau), how, bool(all_separate),
     )  # fmt: skip
+
+
+def _calibrated(
+    pairs: list[dict[str, Any]],
+    raw: np.ndarray,
+    valid: np.ndarray,
+    populations: dict[str, tuple[float, float]] | None,
+    across: dict[str, Any] | None = None,
+) -> tuple[np.ndarray, bool]:
+    """The pairs' probabilities calibrated side by side on the hoard (after each face's pull, fitted
+    across the clusters ``across``, is taken off), and whether every side's scores separate."""
+    from coindie.similarity.calibration import calibrated_probabilities
+    from coindie.similarity.face_effects import without_face_effects_across
+
+    calibrated, all_separate = np.zeros(len(pairs)), True
+    for side in sorted({p["side"] for p in pairs}):
+        on = np.array([p["side"] == side for p in pairs], dtype=bool)
+        probabilities = raw[on]
+        if across is not None:  # side by side, as Project.probability_graph(side, across=...)
+            names = [p["source"] for p, o in zip(pairs, on, strict=True) if o]
+            others = [p["target"] for p, o in zip(pairs, on, strict=True) if o]
+            probabilities = without_face_effects_across(probabilities, valid[on], names, others, across)
+        calibrated[on], calibration = calibrated_probabilities(probabilities, valid[on], prior=populations)
+        all_separate &= calibration.separates
+    return calibrated, bool(all_separate)
+
+
+def _graph(pairs: list[dict[str, Any]], weights: np.ndarray, faces: list[str]) -> Any:
+    from coindie.clustering import ProbabilityGraph
+
+    edges = [(p["source"], p["target"], float(w)) for p, w in zip(pairs, weights, strict=True)]
+    return ProbabilityGraph.from_edges(edges, faces)
 
 
 def _input(pair: dict[str, Any], scorer: Any) -> np.ndarray:

@@ -90,10 +90,9 @@ def cluster_and_evaluate(project, out: Path, method: str) -> list[str]:  # noqa:
     labels = project.labels()
     lines = []
     for side, name in (("D", "obverses"), ("R", "reverses")):
-        graph = project.probability_graph(side)
+        graph, tau, how = project.auto_graph(side, method)
         if graph.n_nodes < 3:
             continue
-        tau, how = project.auto_threshold(side, method)
         clusters = get_algorithm(method, threshold=tau).fit(graph).clustering_
         path = write_clusters(clusters, out / f"clusters_{side}.csv")
         line = f"{name}: {graph.n_nodes} faces, {clusters.n_clusters} clusters at threshold {tau:g} ({how})"

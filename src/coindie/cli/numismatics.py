@@ -21,7 +21,10 @@ ThresholdOption = Annotated[
     float | None, typer.Option(help="For a project: links above it join faces (default: the paper's 0.95).")
 ]
 AutoOption = Annotated[
-    bool, typer.Option("--auto", help="For a project: each side's threshold by best silhouette (no labels).")
+    bool,
+    typer.Option(
+        "--auto", help="For a project: each side's threshold without labels (as coindie cluster --auto)."
+    ),
 ]
 MethodOption = Annotated[
     str, typer.Option(help="For a project: components (the paper's), average or leiden.")

@@ -59,7 +59,7 @@ def project_dies(
 ) -> dict[str, SideDies]:
     """The project's die clusters per side, as ``coindie cluster PROJECT`` makes them: at ``threshold``
     (the paper's 0.95 by default) or, with ``auto``, at the threshold of the hoard's own score populations
-    (the silhouette's where they do not separate: ``coindie cluster --auto``), the experts' edits of the
+    (:meth:`coindie.project.Project.auto_graph`: ``coindie cluster --auto``), the experts' edits of the
     review app replayed (``coindie.project.edits``)."""
     from coindie.clustering import PAPER_THRESHOLD
     from coindie.clustering.corrections import corrected_clusters, replay
@@ -73,13 +73,14 @@ def project_dies(
     log = EditLog.of_project(project.folder)
     try:
         for side in SIDES:
-            graph = project.probability_graph(side)
+            if auto:
+                graph, tau, how = project.auto_graph(side, method)
+            else:
+                graph = project.probability_graph(side)
+                tau = PAPER_THRESHOLD if threshold is None else threshold
+                how = "the paper's" if threshold is None else "given"
             if graph.n_nodes == 0:
                 continue
-            tau = PAPER_THRESHOLD if threshold is None else threshold
-            how = "the paper's" if threshold is None else "given"
-            if auto and graph.n_nodes >= 3:
-                tau, how = project.auto_threshold(side, method, graph)
             # the log covers both sides: each side replays the edits about its own faces
             on_side = set(graph.nodes)
             edits = [e for e in log.edits() if e.touched() <= on_side]

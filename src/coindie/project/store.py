@@ -496,13 +496,22 @@ class Project:
         return dict(row) if row else None
 
     def probability_graph(
-        self, side: str | None = None, params_hash: str | None = None, *, calibrated: bool = True
+        self,
+        side: str | None = None,
+        params_hash: str | None = None,
+        *,
+        calibrated: bool = True,
+        across: Mapping[str, object] | None = None,
     ) -> ProbabilityGraph:
         """The project's scored pairs as a :class:`coindie.clustering.ProbabilityGraph`: every usable face
         of ``side`` (``D`` or ``R``; both when None, with no link across sides) and an edge per done pair
         weighted by its same-die probability — calibrated on this hoard's own pairs, side by side
-        (:meth:`calibration`), unless ``calibrated`` is False (the scorer's own probabilities)."""
+        (:meth:`calibration`), unless ``calibrated`` is False (the scorer's own probabilities).
+        ``across``: a first clustering (face id -> label); each face's pull on its scores, fitted on the
+        pairs across its clusters, is taken off before the calibration
+        (:mod:`coindie.similarity.face_effects`)."""
         from coindie.clustering import ProbabilityGraph
+        from coindie.similarity.face_effects import without_face_effects_across
 
         faces = [s.face_id for s in self.scans("ok") if side is None or s.side == side]
         known = set(faces)
@@ -512,6 +521,9 @@ class Project:
         weights = np.array([float(p["probability"] or 0.0) for p in pairs])
         if calibrated:
             valid = np.array([scored(p) for p in pairs], dtype=bool)
+            if across is not None and pairs:
+                sources, targets = [p["source"] for p in pairs], [p["target"] for p in pairs]
+                weights = without_face_effects_across(weights, valid, sources, targets, across)
             for one_side in {p["side"] for p in pairs}:
                 on = np.array([p["side"] == one_side for p in pairs])
                 prior, what = self._calibration_start(one_side, params_hash)
@@ -537,8 +549,8 @@ class Project:
     ) -> tuple[float, str]:
         """The threshold without labels, and how it was chosen: the hoard's own score populations, or,
         when they do not separate, the best silhouette of the calibrated graph's clusters. ``consensus``
-        clustering cuts the consensus of the calibrated probabilities where the silhouette of its own
-        clusters is best. ``graph``: :meth:`probability_graph` of ``side`` when the caller holds it
+        clustering cuts the consensus of the calibrated probabilities where the modularity of its clusters
+        is best. ``graph``: :meth:`probability_graph` of ``side`` when the caller holds it
         already."""
         from coindie.clustering import select_threshold_unsupervised
         from coindie.clustering.algorithms import ConsensusLinkage
@@ -551,9 +563,29 @@ class Project:
         if method == ConsensusLinkage.NAME:
             # the probabilities are calibrated on the hoard (when they separate): the cut is on their
             # consensus, where the hoard's own clusters say
-            how = f"consensus cut chosen by silhouette {choice.score:.3f}"
+            how = f"consensus cut chosen by modularity {choice.score:.3f}"
             return choice.threshold, how + ("" if tau is not None else " (the scores do not separate)")
         return choice.threshold, f"chosen by silhouette {choice.score:.3f} (the scores do not separate)"
+
+    def auto_graph(self, side: str, method: str = "components") -> tuple[ProbabilityGraph, float, str]:
+        """``side``'s calibrated graph and its threshold without labels (:meth:`auto_threshold`). With
+        ``consensus`` clustering, in two passes: the hoard clustered once, then each face's pull on its
+        scores (a well-kept, finely scanned face scores higher with every face of its design than a worn
+        one) fitted on the pairs across those clusters and taken off (:mod:`coindie.similarity.
+        face_effects`), the graph calibrated again and cut again."""
+        from coindie.clustering import PAPER_THRESHOLD, cluster
+        from coindie.clustering.algorithms import ConsensusLinkage
+
+        graph = self.probability_graph(side)
+        if graph.n_nodes < 3:
+            return graph, PAPER_THRESHOLD, "the paper's (too few faces to choose one)"
+        tau, how = self.auto_threshold(side, method, graph)
+        if method != ConsensusLinkage.NAME:
+            return graph, tau, how
+        first = cluster(graph, method, tau)
+        graph = self.probability_graph(side, across=first.labels)
+        tau, how = self.auto_threshold(side, method, graph)
+        return graph, tau, how + ", each face's pull taken off"
 
     def calibration(self, side: str, params_hash: str | None = None) -> HoardCalibration:
         """The two populations of ``side``'s scored pairs (:func:`coindie.similarity.calibrate_hoard`),
