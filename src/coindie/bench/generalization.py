@@ -23,6 +23,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from functools import partial
 from pathlib import Path
 from typing import Any
 
@@ -142,33 +143,31 @@ def row_project(folder: Path, hoard: Path, workers: int) -> Any:
 def evaluate_row(row: str, scorer_name: str, scorer: Any, project: Any, hoard: Path) -> RowResult:
     from sklearn.metrics import roc_auc_score
 
-    from coindie.clustering import cluster, combined, evaluate, read_clusters, select_threshold_unsupervised
+    from coindie.clustering import combined, evaluate, read_clusters
+    from coindie.clustering.second_pass import cluster_twice
 
     truth = read_clusters(hoard / "labels.csv")
     pairs = project.scored_pairs()
-    faces = [s.face_id for s in project.scans("ok")]
     raw = np.array([_probability(p, scorer) for p in pairs])
     valid = np.array([_scored(p, scorer) for p in pairs], dtype=bool)
     same = np.array([truth[p["source"]] == truth[p["target"]] for p in pairs], dtype=bool)
     populations = getattr(scorer, "populations", None) or None
-    first, all_separate = _calibrated(pairs, raw, valid, populations)
-    sides = sorted({p["side"] for p in pairs})
-    on_side = {side: [s.face_id for s in project.scans("ok") if s.side == side] for side in sides}
+    _, all_separate = _calibrated(pairs, raw, valid, populations)
     # as coindie cluster --auto (Project.auto_graph): each side cut where the modularity of its consensus
-    # clusters is best, on probabilities calibrated on the hoard; then each face's pull fitted on the pairs
-    # across those clusters and taken off, calibrated and cut again
-    graph = _graph(pairs, first, faces)
-    labels = {}
-    for side in sides:
-        one = graph.subgraph(on_side[side])
-        labels |= cluster(one, CLUSTERING, select_threshold_unsupervised(one, CLUSTERING).threshold).labels
-    calibrated, _ = _calibrated(pairs, raw, valid, populations, across=labels)
-    graph = _graph(pairs, calibrated, faces)
+    # clusters is best, on probabilities calibrated on the hoard; where those clusters do not stand out,
+    # each face's pull fitted on the pairs across them and taken off, calibrated and cut again
+    calibrated = np.zeros(len(pairs))
     parts, cuts = [], []
-    for side in sides:
-        one = graph.subgraph(on_side[side])
-        cuts.append(select_threshold_unsupervised(one, CLUSTERING).threshold)
-        parts.append(cluster(one, CLUSTERING, cuts[-1]))
+    for side in sorted({p["side"] for p in pairs}):
+        on = np.array([p["side"] == side for p in pairs], dtype=bool)
+        mine = [p for p, o in zip(pairs, on, strict=True) if o]
+        side_faces = [s.face_id for s in project.scans("ok") if s.side == side]
+        last: dict[str, np.ndarray] = {}
+        side_graph = partial(_side_graph, mine, raw[on], valid[on], populations, side_faces, last)
+        result = cluster_twice(side_graph, CLUSTERING)
+        calibrated[on] = last["weights"]
+        cuts.append(result.choice.threshold)
+        parts.append(result.clusters)
     tau, how = float(np.mean(cuts)), "mixture" if all_separate else "silhouette"
     clusters = combined(parts, CLUSTERING)
     scores = evaluate(clusters.labels, truth).scores()
@@ -204,6 +203,20 @@ def _calibrated(
         calibrated[on], calibration = calibrated_probabilities(probabilities, valid[on], prior=populations)
         all_separate &= calibration.separates
     return calibrated, bool(all_separate)
+
+
+def _side_graph(
+    pairs: list[dict[str, Any]],
+    raw: np.ndarray,
+    valid: np.ndarray,
+    populations: dict[str, tuple[float, float]] | None,
+    faces: list[str],
+    last: dict[str, np.ndarray],
+    across: dict[str, Any] | None,
+) -> Any:
+    """One side's calibrated graph (its weights kept in ``last``), for the second pass."""
+    last["weights"] = _calibrated(pairs, raw, valid, populations, across)[0]
+    return _graph(pairs, last["weights"], faces)
 
 
 def _graph(pairs: list[dict[str, Any]], weights: np.ndarray, faces: list[str]) -> Any:

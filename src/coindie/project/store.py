@@ -569,23 +569,27 @@ class Project:
 
     def auto_graph(self, side: str, method: str = "components") -> tuple[ProbabilityGraph, float, str]:
         """``side``'s calibrated graph and its threshold without labels (:meth:`auto_threshold`). With
-        ``consensus`` clustering, in two passes: the hoard clustered once, then each face's pull on its
-        scores (a well-kept, finely scanned face scores higher with every face of its design than a worn
-        one) fitted on the pairs across those clusters and taken off (:mod:`coindie.similarity.
-        face_effects`), the graph calibrated again and cut again."""
-        from coindie.clustering import PAPER_THRESHOLD, cluster
+        ``consensus`` clustering, in two passes where the first clusters do not stand out
+        (:mod:`coindie.clustering.second_pass`): each face's pull on its scores (a well-kept, finely
+        scanned face scores higher with every face of its design than a worn one) fitted on the pairs
+        across the first clusters and taken off (:mod:`coindie.similarity.face_effects`), the graph
+        calibrated again and cut again."""
+        from coindie.clustering import PAPER_THRESHOLD
         from coindie.clustering.algorithms import ConsensusLinkage
+        from coindie.clustering.second_pass import cluster_twice
 
         graph = self.probability_graph(side)
         if graph.n_nodes < 3:
             return graph, PAPER_THRESHOLD, "the paper's (too few faces to choose one)"
-        tau, how = self.auto_threshold(side, method, graph)
         if method != ConsensusLinkage.NAME:
-            return graph, tau, how
-        first = cluster(graph, method, tau)
-        graph = self.probability_graph(side, across=first.labels)
-        tau, how = self.auto_threshold(side, method, graph)
-        return graph, tau, how + ", each face's pull taken off"
+            return graph, *self.auto_threshold(side, method, graph)
+        result = cluster_twice(
+            lambda across: graph if across is None else self.probability_graph(side, across=across), method
+        )
+        tau, how = self.auto_threshold(side, method, result.graph)
+        if result.second_pass:
+            how += f", each face's pull taken off (first clusters' silhouette {result.first_silhouette:.2f})"
+        return result.graph, tau, how
 
     def calibration(self, side: str, params_hash: str | None = None) -> HoardCalibration:
         """The two populations of ``side``'s scored pairs (:func:`coindie.similarity.calibrate_hoard`),

@@ -1,0 +1,74 @@
+"""The second pass of unsupervised clustering: each face's pull taken off where the first clusters are
+murky, not where they stand out."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from coindie.clustering import ProbabilityGraph, cluster, evaluate, second_pass, select_threshold_unsupervised
+from coindie.clustering.second_pass import cluster_twice
+from coindie.similarity.face_effects import without_face_effects_across
+
+
+def _graphs(die: np.ndarray, log_odds: np.ndarray, side: str = "D"):  # noqa: ANN202 (a closure)
+    """Names, truth, and the calibrated-graph callback cluster_twice takes (probabilities = sigmoid)."""
+    n = len(die)
+    i, j = np.triu_indices(n, k=1)
+    names = [f"L{k:04d}{side}" for k in range(n)]
+    sources, targets = [names[k] for k in i], [names[k] for k in j]
+    p = 1.0 / (1.0 + np.exp(-log_odds))
+    valid = np.ones(len(p), dtype=bool)
+
+    def calibrated_graph(across):  # noqa: ANN001, ANN202
+        w = p if across is None else without_face_effects_across(p, valid, sources, targets, across)
+        return ProbabilityGraph.from_edges(list(zip(sources, targets, w, strict=True)), names)
+
+    return dict(zip(names, die, strict=True)), calibrated_graph
+
+
+def _worn_hoard(seed: int) -> tuple[np.ndarray, np.ndarray]:
+    """One type; each face's pull (wear, crusts, scanner) as large as the same-die gap."""
+    rng = np.random.default_rng(seed)
+    die = np.repeat(np.arange(5), [12, 10, 8, 6, 4])
+    pull = rng.normal(0.0, 1.2, len(die))
+    i, j = np.triu_indices(len(die), k=1)
+    return die, -3.0 + pull[i] + pull[j] + 3.0 * (die[i] == die[j]) + rng.normal(0.0, 0.7, len(i))
+
+
+def _two_types(seed: int) -> tuple[np.ndarray, np.ndarray]:
+    """Clean scans of two types: three dies of one, two (4 coins and 1) of the other."""
+    rng = np.random.default_rng(seed)
+    die = np.repeat(np.arange(5), [10, 8, 6, 4, 1])
+    kind = (die >= 3).astype(int)
+    pull = rng.normal(0.0, 0.5, len(die))
+    i, j = np.triu_indices(len(die), k=1)
+    base = np.where(kind[i] == kind[j], -3.0, -10.0)
+    return die, base + 12.0 * (die[i] == die[j]) + pull[i] + pull[j] + rng.normal(0.0, 1.0, len(i))
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_a_worn_hoard_is_clustered_again_and_better(seed: int) -> None:
+    truth, calibrated_graph = _graphs(*_worn_hoard(seed))
+    first_graph = calibrated_graph(None)
+    cut = select_threshold_unsupervised(first_graph, "consensus").threshold
+    first = cluster(first_graph, "consensus", cut)
+    result = cluster_twice(calibrated_graph, "consensus")
+    assert result.second_pass and result.first_silhouette < second_pass.CLEAR_SILHOUETTE
+    assert evaluate(result.clusters.labels, truth).fmi > evaluate(first.labels, truth).fmi
+
+
+def test_clear_clusters_of_two_types_are_kept_as_they_are(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The second type's faces score low with every coin of the first: its pull is its type, and taking
+    it off would join the second type's two dies. Its clusters stand out, so the second pass is not run."""
+    merged_when_forced = 0
+    for seed in range(4):
+        truth, calibrated_graph = _graphs(*_two_types(seed), side="R")
+        result = cluster_twice(calibrated_graph, "consensus")
+        assert not result.second_pass and result.first_silhouette >= second_pass.CLEAR_SILHOUETTE
+        assert evaluate(result.clusters.labels, truth).fmi == 1.0
+        with monkeypatch.context() as patch:
+            patch.setattr(second_pass, "CLEAR_SILHOUETTE", 2.0)
+            forced = cluster_twice(calibrated_graph, "consensus")
+        merged_when_forced += forced.clusters.n_clusters < result.clusters.n_clusters
+    assert merged_when_forced >= 3
