@@ -43,8 +43,8 @@ def test_consensus_is_symmetric_bounded_and_one_on_the_diagonal() -> None:
 def test_dies_with_failed_and_weak_links_are_kept_together_by_consensus_not_by_components() -> None:
     """Half of each die's pairs failed to register and the rest score 0.5-0.95: the coins link to each
     other through the rest of their die. Components at the mixture's 0.9 break the dies into pieces; the
-    consensus, cut where the modularity of its clusters is best (what coindie cluster --auto does), keeps
-    them."""
+    consensus, cut where the silhouette of its clusters is best (what coindie cluster --auto does first),
+    keeps them."""
     consensus_fmi, component_fmi = [], []
     for seed in range(8):
         graph, truth = _hoard_graph([10, 8, 6, 1], seed=seed, failed=0.5, weak=(0.5, 0.95))
@@ -64,7 +64,7 @@ def test_consensus_keeps_a_singleton_apart() -> None:
     assert len(set(labels.values())) == 3
 
 
-def test_the_cut_by_modularity_follows_the_hoard() -> None:
+def test_the_cut_by_silhouette_follows_the_hoard() -> None:
     """Clean dies: a cut anywhere between the two populations, and the dies found; dies held together
     only by their neighbourhoods: a lower cut."""
     clean, truth = _hoard_graph([8, 6, 4, 1], seed=2, failed=0.0, weak=(0.9, 0.99))

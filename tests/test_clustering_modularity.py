@@ -43,3 +43,26 @@ def test_weights_are_the_links_above_the_typical_pair() -> None:
     np.testing.assert_allclose(W, W.T)
     assert W[0, 1] == pytest.approx(0.7) and W[0, 2] == 0.0
     assert modularity(np.zeros((3, 3)), [0, 1, 2]) == 0.0
+
+
+def test_the_modularity_cut_keeps_dies_with_weak_links_together() -> None:
+    """Dies whose faces link only weakly, half their pairs failed: the cut by modularity of the consensus
+    clusters finds them; an unknown criterion is refused."""
+    from coindie.clustering import ProbabilityGraph, cluster, evaluate, select_threshold_unsupervised
+    from coindie.errors import ParameterError
+
+    rng = np.random.default_rng(3)
+    die = np.repeat(np.arange(4), [10, 8, 6, 4])
+    i, j = np.triu_indices(len(die), k=1)
+    same = die[i] == die[j]
+    p = np.where(same, rng.uniform(0.3, 0.9, len(i)), rng.uniform(0.0, 0.2, len(i)))
+    p[same & (rng.random(len(i)) < 0.5)] = 0.0
+    names = [f"L{k:04d}D" for k in range(len(die))]
+    sources, targets = [names[k] for k in i], [names[k] for k in j]
+    graph = ProbabilityGraph.from_edges(list(zip(sources, targets, p, strict=True)), names)
+    choice = select_threshold_unsupervised(graph, "consensus", criterion="modularity")
+    assert choice.criterion == "modularity"
+    truth = dict(zip(names, die, strict=True))
+    assert evaluate(cluster(graph, "consensus", choice.threshold).labels, truth).fmi > 0.9
+    with pytest.raises(ParameterError):
+        select_threshold_unsupervised(graph, "consensus", criterion="aic")

@@ -33,9 +33,10 @@ def cluster_command(
         bool,
         typer.Option(
             "--auto",
-            help="Choose the threshold without labels: consensus clustering cut where the modularity of "
-            "its clusters is best (a project: each side, then again with each face's pull taken off); "
-            "other methods: a project's own score populations, else the best silhouette on 1 - p.",
+            help="Choose the threshold without labels: consensus clustering cut where the silhouette of "
+            "its clusters is best (a project: each side, again with each face's pull taken off where the "
+            "clusters do not stand out); other methods: a project's own score populations, else the best "
+            "silhouette on 1 - p.",
         ),
     ] = False,
     method: Annotated[

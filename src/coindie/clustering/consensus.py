@@ -28,8 +28,9 @@ from coindie.clustering.graph import ProbabilityGraph
 
 #: Average consensus above which two clusters of faces merge (``consensus`` clustering) when no cut is
 #: chosen: the two faces' strong links overlap in more than about 0.4 of their weight. Without labels,
-#: coindie chooses the cut on each hoard by the modularity of its clusters (:func:`coindie.clustering.
-#: select_threshold_unsupervised`): 0.10-0.18 on synthetic all-hard hoards, 0.34 on the real beard graph.
+#: coindie chooses the cut on each hoard by the silhouette of its clusters (:func:`coindie.clustering.
+#: select_threshold_unsupervised`; 0.34 on the real beard graph), and in the second pass of
+#: :mod:`coindie.clustering.second_pass` by their modularity (0.10-0.25 on synthetic all-hard hoards).
 CONSENSUS_THRESHOLD = 0.4
 #: Consensus steps averaged with the probabilities (:func:`consensus_similarity`). One step (the mean of
 #: the probabilities and their consensus) left the all-hard synthetic hoards at FMI 0.79-0.80; two reach

@@ -56,9 +56,11 @@ def clusters_stand_out(graph: ProbabilityGraph, labels: Mapping[str, int]) -> fl
 def cluster_twice(
     calibrated_graph: Callable[[Mapping[str, int] | None], ProbabilityGraph], method: str
 ) -> TwoPassResult:
-    """Cluster ``calibrated_graph(None)`` (the hoard's calibrated probabilities) at the cut chosen without
-    labels; when those clusters do not stand out, cluster ``calibrated_graph(first_labels)`` (the same
-    with each face's pull, fitted across the first clusters, taken off before the calibration) again."""
+    """Cluster ``calibrated_graph(None)`` (the hoard's calibrated probabilities) at the cut of best
+    silhouette; when those clusters do not stand out, cluster ``calibrated_graph(first_labels)`` (the same
+    with each face's pull, fitted across the first clusters, taken off before the calibration) again, at
+    the cut of best modularity (:func:`coindie.clustering.select_threshold_unsupervised`: the silhouette
+    splits the dies of murky hoards, the modularity merges the small dies of clear ones)."""
     graph = calibrated_graph(None)
     choice = select_threshold_unsupervised(graph, method)
     first = cluster(graph, method, choice.threshold)
@@ -66,5 +68,5 @@ def cluster_twice(
     if clear >= CLEAR_SILHOUETTE:
         return TwoPassResult(graph, choice, first, clear, False)
     graph = calibrated_graph(first.labels)
-    choice = select_threshold_unsupervised(graph, method)
+    choice = select_threshold_unsupervised(graph, method, criterion="modularity")
     return TwoPassResult(graph, choice, cluster(graph, method, choice.threshold), clear, True)

@@ -549,9 +549,9 @@ class Project:
     ) -> tuple[float, str]:
         """The threshold without labels, and how it was chosen: the hoard's own score populations, or,
         when they do not separate, the best silhouette of the calibrated graph's clusters. ``consensus``
-        clustering cuts the consensus of the calibrated probabilities where the modularity of its clusters
-        is best. ``graph``: :meth:`probability_graph` of ``side`` when the caller holds it
-        already."""
+        clustering cuts the consensus of the calibrated probabilities where the silhouette of its own
+        clusters is best (:meth:`auto_graph` for the second pass). ``graph``: :meth:`probability_graph`
+        of ``side`` when the caller holds it already."""
         from coindie.clustering import select_threshold_unsupervised
         from coindie.clustering.algorithms import ConsensusLinkage
 
@@ -563,7 +563,7 @@ class Project:
         if method == ConsensusLinkage.NAME:
             # the probabilities are calibrated on the hoard (when they separate): the cut is on their
             # consensus, where the hoard's own clusters say
-            how = f"consensus cut chosen by modularity {choice.score:.3f}"
+            how = f"consensus cut chosen by {choice.criterion} {choice.score:.3f}"
             return choice.threshold, how + ("" if tau is not None else " (the scores do not separate)")
         return choice.threshold, f"chosen by silhouette {choice.score:.3f} (the scores do not separate)"
 
@@ -586,10 +586,13 @@ class Project:
         result = cluster_twice(
             lambda across: graph if across is None else self.probability_graph(side, across=across), method
         )
-        tau, how = self.auto_threshold(side, method, result.graph)
+        choice = result.choice
+        how = f"consensus cut chosen by {choice.criterion} {choice.score:.3f}"
         if result.second_pass:
             how += f", each face's pull taken off (first clusters' silhouette {result.first_silhouette:.2f})"
-        return result.graph, tau, how
+        if self.mixture_threshold(side) is None:
+            how += " (the scores do not separate)"
+        return result.graph, choice.threshold, how
 
     def calibration(self, side: str, params_hash: str | None = None) -> HoardCalibration:
         """The two populations of ``side``'s scored pairs (:func:`coindie.similarity.calibrate_hoard`),
