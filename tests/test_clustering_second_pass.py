@@ -72,3 +72,13 @@ def test_clear_clusters_of_two_types_are_kept_as_they_are(monkeypatch: pytest.Mo
             forced = cluster_twice(calibrated_graph, "consensus")
         merged_when_forced += forced.clusters.n_clusters < result.clusters.n_clusters
     assert merged_when_forced >= 3
+
+
+def test_a_hoard_left_in_singletons_gets_its_second_pass() -> None:
+    """Every probability near 0 (a hoard the scorer finds hard everywhere): the first pass leaves each face
+    alone, nothing stands out, and the pulls (fitted on every pair) are taken off."""
+    die, log_odds = _worn_hoard(0)
+    truth, calibrated_graph = _graphs(die, log_odds - 12.0)
+    result = cluster_twice(calibrated_graph, "consensus")
+    assert result.first_silhouette == 0.0 and result.second_pass
+    assert second_pass.clusters_stand_out(result.graph, {face: 0 for face in truth}) == 0.0

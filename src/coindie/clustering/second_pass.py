@@ -41,13 +41,14 @@ class TwoPassResult:
 
 
 def clusters_stand_out(graph: ProbabilityGraph, labels: Mapping[str, int]) -> float:
-    """Mean silhouette of the clusters ``labels`` on the distance ``1 - p`` of ``graph`` (1 when every
-    face is in one cluster or each face alone: nothing to compare)."""
+    """Mean silhouette of the clusters ``labels`` on the distance ``1 - p`` of ``graph``; 0 when every
+    face is in one cluster or each face alone (no cluster stands out: a hard hoard whose calibrated
+    probabilities are all near 0 leaves each face alone)."""
     from sklearn.metrics import silhouette_score
 
     codes = np.unique([labels[face] for face in graph.nodes], return_inverse=True)[1]
     if not 2 <= codes.max() + 1 <= graph.n_nodes - 1:
-        return 1.0
+        return 0.0
     distance = 1.0 - graph.matrix()
     np.fill_diagonal(distance, 0.0)
     return float(silhouette_score(np.clip(distance, 0.0, None), codes, metric="precomputed"))
