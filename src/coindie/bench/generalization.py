@@ -6,9 +6,10 @@ One row per hoard: a ``study`` hoard (80 faces, 12 dies) made with one axis of t
 a project (``coindie init``, ``coindie run``: every same-side pair registered once by ``relief``, both the
 relief features and the paper's histogram stored), then for each scorer its probabilities, the per-hoard
 calibration, the clustering of ``coindie cluster --auto`` (average linkage on the consensus of the calibrated
-probabilities, :mod:`coindie.clustering.consensus`, cut where the modularity of its clusters is best; then
-each face's pull on its scores taken off, :mod:`coindie.similarity.face_effects`, and cut again), and the
-hidden labels to judge:
+probabilities, :mod:`coindie.clustering.consensus`, cut where the silhouette of its clusters is best; where
+they do not stand out, each face's pull on its scores taken off, :mod:`coindie.similarity.face_effects`,
+and cut again where their modularity is best: :mod:`coindie.clustering.second_pass`), and the hidden
+labels to judge:
 
 - FMI and ARI of the clusters;
 - the share of same-die pairs refused (registration refused, or nothing to score);
@@ -152,20 +153,20 @@ def evaluate_row(row: str, scorer_name: str, scorer: Any, project: Any, hoard: P
     valid = np.array([_scored(p, scorer) for p in pairs], dtype=bool)
     same = np.array([truth[p["source"]] == truth[p["target"]] for p in pairs], dtype=bool)
     populations = getattr(scorer, "populations", None) or None
-    _, all_separate = _calibrated(pairs, raw, valid, populations)
-    # as coindie cluster --auto (Project.auto_graph): each side cut where the modularity of its consensus
+    # as coindie cluster --auto (Project.auto_graph): each side cut where the silhouette of its consensus
     # clusters is best, on probabilities calibrated on the hoard; where those clusters do not stand out,
     # each face's pull fitted on the pairs across them and taken off, calibrated and cut again
-    calibrated = np.zeros(len(pairs))
+    calibrated, all_separate = np.zeros(len(pairs)), True
     parts, cuts = [], []
     for side in sorted({p["side"] for p in pairs}):
         on = np.array([p["side"] == side for p in pairs], dtype=bool)
         mine = [p for p, o in zip(pairs, on, strict=True) if o]
         side_faces = [s.face_id for s in project.scans("ok") if s.side == side]
-        last: dict[str, np.ndarray] = {}
+        last: dict[str, Any] = {}
         side_graph = partial(_side_graph, mine, raw[on], valid[on], populations, side_faces, last)
         result = cluster_twice(side_graph, CLUSTERING)
         calibrated[on] = last["weights"]
+        all_separate &= last["separates"]
         cuts.append(result.choice.threshold)
         parts.append(result.clusters)
     tau, how = float(np.mean(cuts)), "mixture" if all_separate else "silhouette"
@@ -180,49 +181,29 @@ def evaluate_row(row: str, scorer_name: str, scorer: Any, project: Any, hoard: P
     )  # fmt: skip
 
 
-def _calibrated(
-    pairs: list[dict[str, Any]],
-    raw: np.ndarray,
-    valid: np.ndarray,
-    populations: dict[str, tuple[float, float]] | None,
-    across: dict[str, Any] | None = None,
-) -> tuple[np.ndarray, bool]:
-    """The pairs' probabilities calibrated side by side on the hoard (after each face's pull, fitted
-    across the clusters ``across``, is taken off), and whether every side's scores separate."""
-    from coindie.similarity.calibration import calibrated_probabilities
-    from coindie.similarity.face_effects import without_face_effects_across
-
-    calibrated, all_separate = np.zeros(len(pairs)), True
-    for side in sorted({p["side"] for p in pairs}):
-        on = np.array([p["side"] == side for p in pairs], dtype=bool)
-        probabilities = raw[on]
-        if across is not None:  # side by side, as Project.probability_graph(side, across=...)
-            names = [p["source"] for p, o in zip(pairs, on, strict=True) if o]
-            others = [p["target"] for p, o in zip(pairs, on, strict=True) if o]
-            probabilities = without_face_effects_across(probabilities, valid[on], names, others, across)
-        calibrated[on], calibration = calibrated_probabilities(probabilities, valid[on], prior=populations)
-        all_separate &= calibration.separates
-    return calibrated, bool(all_separate)
-
-
 def _side_graph(
     pairs: list[dict[str, Any]],
     raw: np.ndarray,
     valid: np.ndarray,
     populations: dict[str, tuple[float, float]] | None,
     faces: list[str],
-    last: dict[str, np.ndarray],
+    last: dict[str, Any],
     across: dict[str, Any] | None,
 ) -> Any:
-    """One side's calibrated graph (its weights kept in ``last``), for the second pass."""
-    last["weights"] = _calibrated(pairs, raw, valid, populations, across)[0]
-    return _graph(pairs, last["weights"], faces)
-
-
-def _graph(pairs: list[dict[str, Any]], weights: np.ndarray, faces: list[str]) -> Any:
+    """One side's graph of probabilities calibrated on the hoard, after each face's pull (fitted across
+    the clusters ``across``) is taken off, as ``Project.probability_graph(side, across=...)``; the
+    weights kept in ``last``, and whether the first pass's scores separate."""
     from coindie.clustering import ProbabilityGraph
+    from coindie.similarity.calibration import calibrated_probabilities
+    from coindie.similarity.face_effects import without_face_effects_across
 
-    edges = [(p["source"], p["target"], float(w)) for p, w in zip(pairs, weights, strict=True)]
+    if across is not None:
+        sources, targets = [p["source"] for p in pairs], [p["target"] for p in pairs]
+        raw = without_face_effects_across(raw, valid, sources, targets, across)
+    last["weights"], calibration = calibrated_probabilities(raw, valid, prior=populations)
+    if across is None:
+        last["separates"] = calibration.separates
+    edges = [(p["source"], p["target"], float(w)) for p, w in zip(pairs, last["weights"], strict=True)]
     return ProbabilityGraph.from_edges(edges, faces)
 
 

@@ -33,6 +33,7 @@ from coindie.similarity.calibration import (
 
 if TYPE_CHECKING:
     from coindie.clustering import ProbabilityGraph
+    from coindie.clustering.threshold import ThresholdChoice
 
 DB_NAME = "project.sqlite"
 CACHE_DIR = "cache"
@@ -563,8 +564,7 @@ class Project:
         if method == ConsensusLinkage.NAME:
             # the probabilities are calibrated on the hoard (when they separate): the cut is on their
             # consensus, where the hoard's own clusters say
-            how = f"consensus cut chosen by {choice.criterion} {choice.score:.3f}"
-            return choice.threshold, how + ("" if tau is not None else " (the scores do not separate)")
+            return choice.threshold, _consensus_how(choice, "", separates=tau is not None)
         return choice.threshold, f"chosen by silhouette {choice.score:.3f} (the scores do not separate)"
 
     def auto_graph(self, side: str, method: str = "components") -> tuple[ProbabilityGraph, float, str]:
@@ -586,13 +586,11 @@ class Project:
         result = cluster_twice(
             lambda across: graph if across is None else self.probability_graph(side, across=across), method
         )
-        choice = result.choice
-        how = f"consensus cut chosen by {choice.criterion} {choice.score:.3f}"
+        note = ""
         if result.second_pass:
-            how += f", each face's pull taken off (first clusters' silhouette {result.first_silhouette:.2f})"
-        if self.mixture_threshold(side) is None:
-            how += " (the scores do not separate)"
-        return result.graph, choice.threshold, how
+            note = f", each face's pull taken off (first clusters' silhouette {result.first_silhouette:.2f})"
+        separates = self.mixture_threshold(side) is not None
+        return result.graph, result.choice.threshold, _consensus_how(result.choice, note, separates=separates)
 
     def calibration(self, side: str, params_hash: str | None = None) -> HoardCalibration:
         """The two populations of ``side``'s scored pairs (:func:`coindie.similarity.calibrate_hoard`),
@@ -612,6 +610,12 @@ class Project:
         prior = json.loads(prior_text) if prior_text else {}
         name = {"D": "obverse", "R": "reverse"}.get(side, side)
         return {k: (float(v[0]), float(v[1])) for k, v in prior.items()} or None, f"{name} pairs"
+
+
+def _consensus_how(choice: ThresholdChoice, note: str, *, separates: bool) -> str:
+    """How a consensus cut was chosen, in words (``coindie cluster --auto``, the demo)."""
+    how = f"consensus cut chosen by {choice.criterion} {choice.score:.3f}{note}"
+    return how + ("" if separates else " (the scores do not separate)")
 
 
 def _max_same_share(pairs: list[dict[str, Any]]) -> float:

@@ -47,7 +47,6 @@ def face_effects(
     targets: ArrayLike,
     use: ArrayLike,
     n_faces: int,
-    quantile: float = 0.5,
 ) -> FloatArray:
     """The pull ``a`` (n_faces,) of each face on the log-odds of its pairs (``sources``, ``targets``:
     face indices), fitted on the pairs where ``use`` is True: the median over a face's pairs of the pair's
@@ -67,7 +66,7 @@ def face_effects(
         new = np.full(n_faces, np.nan)
         for f in range(n_faces):
             if starts[f + 1] - starts[f] >= MIN_PAIRS:
-                new[f] = np.quantile(residual[starts[f] : starts[f + 1]], quantile)
+                new[f] = np.median(residual[starts[f] : starts[f + 1]])
         if np.isnan(new).all():
             return np.zeros(n_faces)
         a = np.nan_to_num(new - np.nanmedian(new))
