@@ -64,6 +64,30 @@ def test_consensus_keeps_a_singleton_apart() -> None:
     assert len(set(labels.values())) == 3
 
 
+def test_a_one_coin_die_of_a_large_die_s_design_stays_apart() -> None:
+    """One coin of another die of the design of a 15-coin die: linked to that die's coins at 0.05-0.7
+    (wear and noise bring two dies of one design close), to nothing else. Its row points where theirs do,
+    but it is linked far more weakly than they are to each other: the consensus keeps it apart, at the
+    cut the silhouette chooses. Were the rows compared by direction alone (their cosine), it would join."""
+    rng = np.random.default_rng(11)
+    graph, truth = _hoard_graph([15, 8, 5], seed=11, failed=0.0, weak=(0.8, 0.99))
+    lone = "L0029D"
+    edges = list(graph.edges())
+    edges += [(lone, f, rng.uniform(0.05, 0.7) if truth[f] == "D0" else rng.uniform(0.0, 0.1)) for f in truth]
+    truth[lone] = "D3"
+    graph = ProbabilityGraph.from_edges(edges, truth)
+    cut = select_threshold_unsupervised(graph, "consensus").threshold
+    labels = cluster(graph, "consensus", cut).labels
+    assert sum(labels[lone] == labels[face] for face in truth) == 1
+    assert evaluate(labels, truth).fmi == 1.0
+    P = graph.matrix()
+    die = [k for k, face in enumerate(graph.nodes) if truth[face] == "D0"]
+    k = graph.nodes.index(lone)
+    norms = np.linalg.norm(P, axis=1)
+    cosine = P @ P.T / np.outer(norms, norms)
+    assert consensus_matrix(P)[k, die].mean() < 0.5 < cosine[k, die].mean()
+
+
 def test_the_cut_by_silhouette_follows_the_hoard() -> None:
     """Clean dies: a cut anywhere between the two populations, and the dies found; dies held together
     only by their neighbourhoods: a lower cut."""

@@ -43,9 +43,11 @@ def test_a_prior_from_another_scanner_is_corrected_by_the_hoard() -> None:
     assert abs(calibration.same_share - same_die.mean()) < 0.03
     calibrated = calibration.probability(log_odds(probabilities))
     # on this hoard, the model's own 0.5 (log-odds 0) would miss most same-die pairs (mean log-odds 1)
-    # and the calibrated threshold keeps most of them while keeping few different-die pairs
+    # and the calibrated probabilities keep most of them while keeping few different-die pairs (the t
+    # components' heavy tails leave some doubt on the lower same-die pairs, so fewer pass 0.9 than 0.5)
+    assert (calibrated[same_die] > 0.5).mean() > 0.9 and (calibrated[~same_die] > 0.5).mean() < 0.01
     kept = calibrated > MIXTURE_THRESHOLD
-    assert kept[same_die].mean() > 0.9 and kept[~same_die].mean() < 0.01
+    assert kept[same_die].mean() > 0.7 and kept[~same_die].mean() < 0.01
 
 
 def test_calibrated_probabilities_never_fall_as_the_score_rises() -> None:
@@ -55,7 +57,26 @@ def test_calibrated_probabilities_never_fall_as_the_score_rises() -> None:
     grid = np.linspace(-30, 30, 601)
     posterior = calibration.probability(grid)
     assert np.all(np.diff(posterior) >= -1e-12)
-    assert posterior[0] < 0.01 and posterior[-1] > 0.999
+    assert posterior[0] < 0.01 and posterior[-1] > 0.99
+
+
+def test_other_dies_of_one_design_do_not_pass_for_the_same_die() -> None:
+    """A hoard's different-die pairs are a mixture: other designs far below, other dies of the same
+    design close below the same-die pairs, a heavier upper tail than a Gaussian's. The calibration must
+    not hand that tail to the same die (Gaussian components do: 34 of these different-die pairs above
+    0.9 and the same-die share 4.7 points too high)."""
+    rng = np.random.default_rng(9)
+    n = 2000
+    same_die = rng.random(n) < 0.3
+    design_mate = rng.random(n) < 0.2
+    different = np.where(design_mate, rng.normal(-2.0, 1.5, n), rng.normal(-5.0, 1.0, n))
+    z = np.where(same_die, rng.normal(12.0, 7.0, n), different)
+    calibration = calibrate_hoard(1.0 / (1.0 + np.exp(-z)))
+    assert calibration.separates, calibration.message
+    assert abs(calibration.same_share - same_die.mean()) < 0.02
+    calibrated = calibration.probability(z)
+    assert (calibrated[~same_die] > MIXTURE_THRESHOLD).sum() <= 0.005 * (~same_die).sum()
+    assert (calibrated[same_die] > MIXTURE_THRESHOLD).mean() > 0.85
 
 
 def test_scores_of_one_population_are_reported_as_not_separating() -> None:
