@@ -5,9 +5,11 @@ from __future__ import annotations
 import itertools
 
 import numpy as np
+import pytest
 
 from coindie.clustering import ProbabilityGraph, cluster, evaluate, select_threshold_unsupervised
 from coindie.clustering.consensus import CONSENSUS_THRESHOLD, consensus_graph, consensus_matrix
+from coindie.errors import ParameterError
 
 
 def _hoard_graph(sizes: list[int], seed: int, failed: float, weak: tuple[float, float]):
@@ -83,9 +85,22 @@ def test_a_one_coin_die_of_a_large_die_s_design_stays_apart() -> None:
     P = graph.matrix()
     die = [k for k, face in enumerate(graph.nodes) if truth[face] == "D0"]
     k = graph.nodes.index(lone)
-    norms = np.linalg.norm(P, axis=1)
-    cosine = P @ P.T / np.outer(norms, norms)
-    assert consensus_matrix(P)[k, die].mean() < 0.5 < cosine[k, die].mean()
+    assert consensus_matrix(P)[k, die].mean() < 0.5 < consensus_matrix(P, "cosine")[k, die].mean()
+
+
+def test_the_two_measures_compare_rows_by_direction_and_by_shared_weight() -> None:
+    """Two faces linked to the same two faces, one three times as strongly as the other: the cosine reads
+    the direction of their rows, the shared measure also how strongly each is linked."""
+    P = np.eye(6)
+    P[0, 2] = P[2, 0] = P[0, 3] = P[3, 0] = 0.9
+    P[1, 2] = P[2, 1] = P[1, 3] = P[3, 1] = 0.3
+    a, b = P[0], P[1]  # the typical pair's probability (the median off the diagonal) is 0 here
+    cosine = a @ b / np.linalg.norm(a) / np.linalg.norm(b)
+    shared = a @ b / max(a @ a, b @ b)
+    assert consensus_matrix(P, "cosine")[0, 1] == pytest.approx(cosine)
+    assert consensus_matrix(P)[0, 1] == pytest.approx(shared) and shared < cosine
+    with pytest.raises(ParameterError, match="measure"):
+        consensus_matrix(P, "jaccard")
 
 
 def test_the_cut_by_silhouette_follows_the_hoard() -> None:

@@ -56,6 +56,10 @@ def test_a_worn_hoard_is_clustered_again_and_better(seed: int) -> None:
     result = cluster_twice(calibrated_graph, "consensus")
     assert result.second_pass and result.first_silhouette < second_pass.CLEAR_SILHOUETTE
     assert evaluate(result.clusters.labels, truth).fmi > evaluate(first.labels, truth).fmi
+    # the second pass compares faces by direction alone, and says so to whoever clusters its graph again
+    assert result.params == {"measure": second_pass.SECOND_MEASURE}
+    again = cluster(result.graph, "consensus", result.choice.threshold, **result.params)
+    assert again.labels == result.clusters.labels
 
 
 def test_clear_clusters_of_two_types_are_kept_as_they_are(monkeypatch: pytest.MonkeyPatch) -> None:

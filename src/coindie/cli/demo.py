@@ -90,10 +90,10 @@ def cluster_and_evaluate(project, out: Path, method: str) -> list[str]:  # noqa:
     labels = project.labels()
     lines = []
     for side, name in (("D", "obverses"), ("R", "reverses")):
-        graph, tau, how = project.auto_graph(side, method)
+        graph, tau, how, params = project.auto_graph(side, method)
         if graph.n_nodes < 3:
             continue
-        clusters = get_algorithm(method, threshold=tau).fit(graph).clustering_
+        clusters = get_algorithm(method, threshold=tau, **params).fit(graph).clustering_
         path = write_clusters(clusters, out / f"clusters_{side}.csv")
         line = f"{name}: {graph.n_nodes} faces, {clusters.n_clusters} clusters at threshold {tau:g} ({how})"
         truth = {face: die for face, die in labels.items() if face in clusters.labels}

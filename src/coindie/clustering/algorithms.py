@@ -37,7 +37,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from coindie.arrays import IntArray
-from coindie.clustering.consensus import CONSENSUS_DEPTH, CONSENSUS_THRESHOLD, consensus_graph
+from coindie.clustering.consensus import CONSENSUS_DEPTH, CONSENSUS_THRESHOLD, MEASURES, consensus_graph
 from coindie.clustering.graph import ProbabilityGraph
 from coindie.errors import ParameterError
 from coindie.ids import parse_face_id
@@ -174,8 +174,16 @@ class ConsensusLinkage(ClusteringAlgorithm):
 
     depth: int = param(CONSENSUS_DEPTH, doc="consensus steps averaged with the probabilities", low=1, high=4)
 
+    measure: str = param(
+        "shared",
+        doc="how two faces' rows of probabilities are compared: 'shared' (cosine times the ratio of their "
+        "norms), or 'cosine' (direction alone: the second pass of --auto, on hoards whose dies do not "
+        "stand out)",
+        choices=MEASURES,
+    )
+
     def _raw_labels(self, graph: ProbabilityGraph) -> IntArray:
-        return _average_linkage(consensus_graph(graph, self.depth), self.threshold)
+        return _average_linkage(consensus_graph(graph, self.depth, self.measure), self.threshold)
 
 
 @register_algorithm
@@ -203,6 +211,7 @@ def cluster(
     *,
     resolution: float = 1.0,
     seed: int = 0,
+    measure: str = "shared",
 ) -> Clustering:
     """Cluster the faces of ``graph`` into dies: ``get_algorithm(method, ...).fit(graph).clustering_``.
 
@@ -212,9 +221,17 @@ def cluster(
             ``1 - threshold``).
         resolution: Leiden's modularity resolution (higher: more, smaller clusters).
         seed: Leiden's random seed.
+        measure: how ``consensus`` compares two faces' rows (``shared`` or ``cosine``).
     """
-    extra = {"resolution": resolution, "seed": seed} if method == Leiden.NAME else {}
+    extra = method_params(method, resolution=resolution, seed=seed, measure=measure)
     return get_algorithm(method, threshold=threshold, **extra).fit(graph).clustering_
+
+
+def method_params(method: str, **params: Any) -> dict[str, Any]:
+    """Of ``params``, those that ``method``'s algorithm declares (Leiden's resolution and seed, the
+    consensus's measure), for :func:`get_algorithm`."""
+    declared = algorithm_class(method).declared()
+    return {name: value for name, value in params.items() if name in declared}
 
 
 def _components(graph: ProbabilityGraph, threshold: float) -> IntArray:

@@ -10,13 +10,17 @@ different faces) times the ratio of their norms (near 1 when they are linked as 
 dimensionless and reads calibrated probabilities, so it carries no scale of one scanner; it is the
 shared-neighbour similarity of graph clustering, weighted by the probabilities.
 
-Why the norms count: a coin of a one-coin die of the same design as a large die is linked to that die's
-coins, weakly, and to nothing else. Its row points the same way as theirs, so the cosine alone made it one
-of them (on a `study` hoard of the default physics, seed 1022, a one-coin obverse die whose calibrated
-probabilities to a 20-coin die's coins were 0.0-1.0, mean 0.64, had a cosine of 0.83 with them, and four
-one-coin dies were joined to other dies: FMI 0.948); the coins of that die are linked to each other
-strongly, to it weakly, and the ratio of the norms says so (the four kept apart, FMI 1.000 with the
-per-hoard calibration's t components).
+Why the norms count (``measure="shared"``, the first pass): a coin of a one-coin die of the same design
+as a large die is linked to that die's coins, weakly, and to nothing else. Its row points the same way as
+theirs, so the cosine alone made it one of them (on a `study` hoard of the default physics, seed 1022, a
+one-coin obverse die whose calibrated probabilities to a 20-coin die's coins were 0.0-1.0, mean 0.64, had
+a cosine of 0.83 with them, and four one-coin dies were joined to other dies: FMI 0.948); the coins of
+that die are linked to each other strongly, to it weakly, and the ratio of the norms says so (the four
+kept apart, FMI 1.000 with the per-hoard calibration's t components). Where the dies do not stand out
+(worn, crusted hoards: :mod:`coindie.clustering.second_pass`), a face's link strength is its wear more
+than its die, and the ratio splits worn faces off their dies (an all-hard hoard, seed 2000: FMI 0.93 with
+the cosine in the second pass, 0.86 with the ratio): there the rows are compared by direction alone
+(``measure="cosine"``).
 
 On the all-hard synthetic mix (every axis of the wide world at its extreme), the consensus separates the
 reverses' same-die pairs from the others with a pair AUC of 0.999 where their own probabilities give 0.93
@@ -34,6 +38,7 @@ import numpy as np
 
 from coindie.arrays import FloatArray
 from coindie.clustering.graph import ProbabilityGraph
+from coindie.errors import ParameterError
 
 #: Average consensus above which two clusters of faces merge (``consensus`` clustering) when no cut is
 #: chosen: the two faces' strong links overlap in more than about 0.4 of their weight. Without labels,
@@ -46,13 +51,17 @@ CONSENSUS_THRESHOLD = 0.4
 #: 0.85-0.96 and keep the single-axis rows at 0.98-1.00; three merged dies of one design (0.87 on a cupped
 #: hoard with the consensus alone).
 CONSENSUS_DEPTH = 2
+#: How two rows are compared: ``shared`` (their cosine times the ratio of their norms) or ``cosine``.
+MEASURES = ("shared", "cosine")
 
 
-def consensus_matrix(P: FloatArray) -> FloatArray:
+def consensus_matrix(P: FloatArray, measure: str = "shared") -> FloatArray:
     """The weight shared by the rows of a symmetric probability matrix ``P`` (n, n) whose diagonal is 1,
-    ``a·b / max(|a|², |b|²)`` (the cosine of the rows times the ratio of their norms), once the typical
-    pair's probability (the median off the diagonal: most pairs of a hoard are of different dies) is
-    taken off every entry: (n, n), 1 on the diagonal, in [0, 1]."""
+    ``a·b / max(|a|², |b|²)`` (the cosine of the rows times the ratio of their norms; ``measure="cosine"``:
+    the cosine alone), once the typical pair's probability (the median off the diagonal: most pairs of a
+    hoard are of different dies) is taken off every entry: (n, n), 1 on the diagonal, in [0, 1]."""
+    if measure not in MEASURES:
+        raise ParameterError(f"The consensus measure must be one of {', '.join(MEASURES)}. Got {measure!r}.")
     P = np.asarray(P, dtype=np.float64)
     n = len(P)
     if n > 1:
@@ -61,13 +70,16 @@ def consensus_matrix(P: FloatArray) -> FloatArray:
         np.fill_diagonal(P, 1.0)
     squared = np.einsum("ij,ij->i", P, P)
     squared = np.where(squared > 0, squared, 1.0)
-    C = (P @ P.T) / np.maximum(squared[:, None], squared[None, :])
+    if measure == "shared":
+        C = (P @ P.T) / np.maximum(squared[:, None], squared[None, :])
+    else:
+        C = (P @ P.T) / np.sqrt(squared[:, None] * squared[None, :])
     C = np.clip(0.5 * (C + C.T), 0.0, 1.0)
     np.fill_diagonal(C, 1.0)
     return C
 
 
-def consensus_similarity(P: FloatArray, depth: int = CONSENSUS_DEPTH) -> FloatArray:
+def consensus_similarity(P: FloatArray, depth: int = CONSENSUS_DEPTH, measure: str = "shared") -> FloatArray:
     """The mean of the probabilities ``P`` and of their consensus taken ``depth`` times over (the
     consensus of the consensus, ...): the evidence that two faces share a die at one step (their own
     pair), two (common neighbours) and more (neighbours of neighbours), each in [0, 1]."""
@@ -75,17 +87,19 @@ def consensus_similarity(P: FloatArray, depth: int = CONSENSUS_DEPTH) -> FloatAr
     np.fill_diagonal(P, 1.0)
     layers = [P]
     for _ in range(depth):
-        layers.append(consensus_matrix(layers[-1]))
+        layers.append(consensus_matrix(layers[-1], measure))
     return np.mean(layers, axis=0)
 
 
-@lru_cache(maxsize=2)
-def consensus_graph(graph: ProbabilityGraph, depth: int = CONSENSUS_DEPTH) -> ProbabilityGraph:
+@lru_cache(maxsize=4)
+def consensus_graph(
+    graph: ProbabilityGraph, depth: int = CONSENSUS_DEPTH, measure: str = "shared"
+) -> ProbabilityGraph:
     """The complete graph over ``graph``'s faces weighted by :func:`consensus_similarity` (faces with a
-    common neighbour get a link even where their own pair was never scored). Kept for the last two graphs
+    common neighbour get a link even where their own pair was never scored). Kept for the last four graphs
     (by identity): choosing the cut and clustering at it read the same consensus, and its average-linkage
     tree (cached in turn) is cut once per candidate."""
     n = graph.n_nodes
-    C = consensus_similarity(graph.matrix(), depth)
+    C = consensus_similarity(graph.matrix(), depth, measure)
     i, j = np.triu_indices(n, k=1)
     return ProbabilityGraph(graph.nodes, i.astype(np.int64), j.astype(np.int64), C[i, j])

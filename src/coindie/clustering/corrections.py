@@ -207,14 +207,21 @@ def _kept(corrected: ProbabilityGraph, corrections: Corrections, threshold: floa
 
 
 def corrected_clusters(
-    graph: ProbabilityGraph, corrections: Corrections, threshold: float, method: str = "components"
+    graph: ProbabilityGraph,
+    corrections: Corrections,
+    threshold: float,
+    method: str = "components",
+    **params: Any,
 ) -> Clustering:
-    """The die clusters at ``threshold`` once the corrections are applied.
+    """The die clusters at ``threshold`` once the corrections are applied; ``params``: the method's other
+    parameters (the consensus's ``measure``).
 
     ``components`` keeps the forced links at any τ (even 1); the other methods cluster the corrected
     graph (forced links at probability 1, cut ones at 0).
     """
-    algorithm = get_algorithm(method, threshold=threshold)  # the parameters checked by their declarations
+    algorithm = get_algorithm(
+        method, threshold=threshold, **params
+    )  # the parameters checked by their declarations
     corrected = corrected_graph(graph, corrections)
     if method != ConnectedComponents.NAME or corrected.n_nodes == 0:
         return algorithm.fit(corrected).clustering_

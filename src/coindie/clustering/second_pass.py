@@ -21,10 +21,11 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
-from coindie.clustering.algorithms import Clustering, cluster
+from coindie.clustering.algorithms import Clustering, cluster, method_params
 from coindie.clustering.graph import ProbabilityGraph
 from coindie.clustering.threshold import ThresholdChoice, select_threshold_unsupervised
 
@@ -33,15 +34,23 @@ from coindie.clustering.threshold import ThresholdChoice, select_threshold_unsup
 CLEAR_SILHOUETTE = 0.6
 
 
+#: How the consensus compares two faces' rows in each pass (:mod:`coindie.clustering.consensus`): by the
+#: weight they share where the dies may stand out, by direction alone once each face's pull is taken off
+#: (its remaining link strength is still more its wear than its die).
+FIRST_MEASURE, SECOND_MEASURE = "shared", "cosine"
+
+
 @dataclass(frozen=True)
 class TwoPassResult:
-    """The graph clustered last, its cut, the clusters, and the first pass's silhouette."""
+    """The graph clustered last, its cut, the clusters, the first pass's silhouette, and the parameters
+    the clusters were made with (``cluster(graph, method, choice.threshold, **params)`` gives them)."""
 
     graph: ProbabilityGraph
     choice: ThresholdChoice
     clusters: Clustering
     first_silhouette: float
     second_pass: bool
+    params: dict[str, Any]
 
 
 def clusters_stand_out(graph: ProbabilityGraph, labels: Mapping[str, int]) -> float:
@@ -67,11 +76,15 @@ def cluster_twice(
     the cut of best modularity (:func:`coindie.clustering.select_threshold_unsupervised`: the silhouette
     splits the dies of murky hoards, the modularity merges the small dies of clear ones)."""
     graph = calibrated_graph(None)
-    choice = select_threshold_unsupervised(graph, method)
-    first = cluster(graph, method, choice.threshold)
+    params = method_params(method, measure=FIRST_MEASURE)
+    choice = select_threshold_unsupervised(graph, method, **params)
+    first = cluster(graph, method, choice.threshold, **params)
     clear = clusters_stand_out(graph, first.labels)
     if clear >= CLEAR_SILHOUETTE:
-        return TwoPassResult(graph, choice, first, clear, False)
+        return TwoPassResult(graph, choice, first, clear, False, params)
     graph = calibrated_graph(first.labels)
-    choice = select_threshold_unsupervised(graph, method, criterion="modularity")
-    return TwoPassResult(graph, choice, cluster(graph, method, choice.threshold), clear, True)
+    params = method_params(method, measure=SECOND_MEASURE)
+    choice = select_threshold_unsupervised(graph, method, criterion="modularity", **params)
+    return TwoPassResult(
+        graph, choice, cluster(graph, method, choice.threshold, **params), clear, True, params
+    )

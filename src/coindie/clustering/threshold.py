@@ -17,6 +17,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -80,11 +81,12 @@ def select_threshold_unsupervised(
     method: str = "components",
     thresholds: Sequence[float] | None = None,
     criterion: str = "silhouette",
+    measure: str = "shared",
 ) -> ThresholdChoice:
     """The τ whose clustering of ``graph`` has the best mean silhouette on ``1 - p``, without labels.
 
-    ``consensus``: the cut on the consensus (:mod:`coindie.clustering.consensus`) whose clusters have the
-    best silhouette on ``1 - consensus``, over :data:`CONSENSUS_GRID`.
+    ``consensus``: the cut on the consensus (:mod:`coindie.clustering.consensus`, rows compared by
+    ``measure``) whose clusters have the best silhouette on ``1 - consensus``, over :data:`CONSENSUS_GRID`.
 
     ``criterion="modularity"``: the τ whose clusters have the best modularity on ``graph``'s probabilities
     (:mod:`coindie.clustering.modularity`) instead. Where the dies stand out the silhouette is right and
@@ -99,10 +101,13 @@ def select_threshold_unsupervised(
         raise ParameterError(f"The criterion must be 'silhouette' or 'modularity'. Got {criterion!r}.")
     if criterion == "modularity":
         default = CONSENSUS_GRID if method == ConsensusLinkage.NAME else threshold_grid()
-        return _modularity_cut(graph, method, default if thresholds is None else thresholds)
+        extra = {"measure": measure} if method == ConsensusLinkage.NAME else {}
+        return _modularity_cut(graph, method, default if thresholds is None else thresholds, extra)
     if method == ConsensusLinkage.NAME:
         grid = CONSENSUS_GRID if thresholds is None else thresholds
-        return select_threshold_unsupervised(consensus_graph(graph), AverageLinkage.NAME, grid)
+        return select_threshold_unsupervised(
+            consensus_graph(graph, measure=measure), AverageLinkage.NAME, grid
+        )
     grid = threshold_grid() if thresholds is None else np.asarray(thresholds, dtype=np.float64)
     distance = 1.0 - graph.matrix()
     np.fill_diagonal(distance, 0.0)
@@ -116,12 +121,14 @@ def select_threshold_unsupervised(
     return _best(grid, np.asarray(scores, dtype=np.float64), np.asarray(counts), "silhouette")
 
 
-def _modularity_cut(graph: ProbabilityGraph, method: str, thresholds: Sequence[float]) -> ThresholdChoice:
+def _modularity_cut(
+    graph: ProbabilityGraph, method: str, thresholds: Sequence[float], params: Mapping[str, Any]
+) -> ThresholdChoice:
     grid = np.asarray(thresholds, dtype=np.float64)
     weights = link_weights(graph.matrix())
     scores, counts = [], []
     for tau in grid:
-        labels = get_algorithm(method, threshold=float(tau)).fit(graph).labels_
+        labels = get_algorithm(method, threshold=float(tau), **params).fit(graph).labels_
         counts.append(len(np.unique(labels)))
         scores.append(modularity(weights, labels))
     return _best(grid, np.asarray(scores, dtype=np.float64), np.asarray(counts), "modularity")

@@ -74,9 +74,9 @@ def project_dies(
     try:
         for side in SIDES:
             if auto:
-                graph, tau, how = project.auto_graph(side, method)
+                graph, tau, how, params = project.auto_graph(side, method)
             else:
-                graph = project.probability_graph(side)
+                graph, params = project.probability_graph(side), {}
                 tau = PAPER_THRESHOLD if threshold is None else threshold
                 how = "the paper's" if threshold is None else "given"
             if graph.n_nodes == 0:
@@ -84,7 +84,7 @@ def project_dies(
             # the log covers both sides: each side replays the edits about its own faces
             on_side = set(graph.nodes)
             edits = [e for e in log.edits() if e.touched() <= on_side]
-            clusters = corrected_clusters(graph, replay(graph, edits), tau, method)
+            clusters = corrected_clusters(graph, replay(graph, edits), tau, method, **params)
             labels = {face: f"{side}{label}" for face, label in clusters.labels.items()}
             out[side] = SideDies(side, labels, f"{project.folder} ({method}, threshold {tau:g}, {how})", tau)
     finally:

@@ -567,22 +567,25 @@ class Project:
             return choice.threshold, _consensus_how(choice, "", separates=tau is not None)
         return choice.threshold, f"chosen by silhouette {choice.score:.3f} (the scores do not separate)"
 
-    def auto_graph(self, side: str, method: str = "components") -> tuple[ProbabilityGraph, float, str]:
-        """``side``'s calibrated graph and its threshold without labels (:meth:`auto_threshold`). With
-        ``consensus`` clustering, in two passes where the first clusters do not stand out
-        (:mod:`coindie.clustering.second_pass`): each face's pull on its scores (a well-kept, finely
+    def auto_graph(
+        self, side: str, method: str = "components"
+    ) -> tuple[ProbabilityGraph, float, str, dict[str, Any]]:
+        """``side``'s calibrated graph, its threshold without labels (:meth:`auto_threshold`), how it was
+        chosen, and the method's parameters to cluster it with (``cluster(graph, method, threshold,
+        **params)``). With ``consensus`` clustering, in two passes where the first clusters do not stand
+        out (:mod:`coindie.clustering.second_pass`): each face's pull on its scores (a well-kept, finely
         scanned face scores higher with every face of its design than a worn one) fitted on the pairs
         across the first clusters and taken off (:mod:`coindie.similarity.face_effects`), the graph
-        calibrated again and cut again."""
+        calibrated again and cut again, its consensus comparing faces by direction alone."""
         from coindie.clustering import PAPER_THRESHOLD
         from coindie.clustering.algorithms import ConsensusLinkage
         from coindie.clustering.second_pass import cluster_twice
 
         graph = self.probability_graph(side)
         if graph.n_nodes < 3:
-            return graph, PAPER_THRESHOLD, "the paper's (too few faces to choose one)"
+            return graph, PAPER_THRESHOLD, "the paper's (too few faces to choose one)", {}
         if method != ConsensusLinkage.NAME:
-            return graph, *self.auto_threshold(side, method, graph)
+            return graph, *self.auto_threshold(side, method, graph), {}
         result = cluster_twice(
             lambda across: graph if across is None else self.probability_graph(side, across=across), method
         )
@@ -590,7 +593,8 @@ class Project:
         if result.second_pass:
             note = f", each face's pull taken off (first clusters' silhouette {result.first_silhouette:.2f})"
         separates = self.mixture_threshold(side) is not None
-        return result.graph, result.choice.threshold, _consensus_how(result.choice, note, separates=separates)
+        how = _consensus_how(result.choice, note, separates=separates)
+        return result.graph, result.choice.threshold, how, result.params
 
     def calibration(self, side: str, params_hash: str | None = None) -> HoardCalibration:
         """The two populations of ``side``'s scored pairs (:func:`coindie.similarity.calibrate_hoard`),
