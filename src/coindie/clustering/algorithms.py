@@ -37,7 +37,13 @@ import numpy as np
 from numpy.typing import NDArray
 
 from coindie.arrays import IntArray
-from coindie.clustering.consensus import CONSENSUS_DEPTH, CONSENSUS_THRESHOLD, MEASURES, consensus_graph
+from coindie.clustering.consensus import (
+    CONSENSUS_DEPTH,
+    CONSENSUS_THRESHOLD,
+    MEASURES,
+    SHARED,
+    consensus_graph,
+)
 from coindie.clustering.graph import ProbabilityGraph
 from coindie.errors import ParameterError
 from coindie.ids import parse_face_id
@@ -175,7 +181,7 @@ class ConsensusLinkage(ClusteringAlgorithm):
     depth: int = param(CONSENSUS_DEPTH, doc="consensus steps averaged with the probabilities", low=1, high=4)
 
     measure: str = param(
-        "shared",
+        SHARED,
         doc="how two faces' rows of probabilities are compared: 'shared' (cosine times the ratio of their "
         "norms), or 'cosine' (direction alone: the second pass of --auto, on hoards whose dies do not "
         "stand out)",
@@ -211,7 +217,7 @@ def cluster(
     *,
     resolution: float = 1.0,
     seed: int = 0,
-    measure: str = "shared",
+    measure: str = SHARED,
 ) -> Clustering:
     """Cluster the faces of ``graph`` into dies: ``get_algorithm(method, ...).fit(graph).clustering_``.
 

@@ -52,10 +52,11 @@ CONSENSUS_THRESHOLD = 0.4
 #: hoard with the consensus alone).
 CONSENSUS_DEPTH = 2
 #: How two rows are compared: ``shared`` (their cosine times the ratio of their norms) or ``cosine``.
-MEASURES = ("shared", "cosine")
+SHARED, COSINE = "shared", "cosine"
+MEASURES = (SHARED, COSINE)
 
 
-def consensus_matrix(P: FloatArray, measure: str = "shared") -> FloatArray:
+def consensus_matrix(P: FloatArray, measure: str = SHARED) -> FloatArray:
     """The weight shared by the rows of a symmetric probability matrix ``P`` (n, n) whose diagonal is 1,
     ``a·b / max(|a|², |b|²)`` (the cosine of the rows times the ratio of their norms; ``measure="cosine"``:
     the cosine alone), once the typical pair's probability (the median off the diagonal: most pairs of a
@@ -70,7 +71,7 @@ def consensus_matrix(P: FloatArray, measure: str = "shared") -> FloatArray:
         np.fill_diagonal(P, 1.0)
     squared = np.einsum("ij,ij->i", P, P)
     squared = np.where(squared > 0, squared, 1.0)
-    if measure == "shared":
+    if measure == SHARED:
         C = (P @ P.T) / np.maximum(squared[:, None], squared[None, :])
     else:
         C = (P @ P.T) / np.sqrt(squared[:, None] * squared[None, :])
@@ -79,7 +80,7 @@ def consensus_matrix(P: FloatArray, measure: str = "shared") -> FloatArray:
     return C
 
 
-def consensus_similarity(P: FloatArray, depth: int = CONSENSUS_DEPTH, measure: str = "shared") -> FloatArray:
+def consensus_similarity(P: FloatArray, depth: int = CONSENSUS_DEPTH, measure: str = SHARED) -> FloatArray:
     """The mean of the probabilities ``P`` and of their consensus taken ``depth`` times over (the
     consensus of the consensus, ...): the evidence that two faces share a die at one step (their own
     pair), two (common neighbours) and more (neighbours of neighbours), each in [0, 1]."""
@@ -91,14 +92,19 @@ def consensus_similarity(P: FloatArray, depth: int = CONSENSUS_DEPTH, measure: s
     return np.mean(layers, axis=0)
 
 
-@lru_cache(maxsize=4)
 def consensus_graph(
-    graph: ProbabilityGraph, depth: int = CONSENSUS_DEPTH, measure: str = "shared"
+    graph: ProbabilityGraph, depth: int = CONSENSUS_DEPTH, measure: str = SHARED
 ) -> ProbabilityGraph:
     """The complete graph over ``graph``'s faces weighted by :func:`consensus_similarity` (faces with a
     common neighbour get a link even where their own pair was never scored). Kept for the last four graphs
     (by identity): choosing the cut and clustering at it read the same consensus, and its average-linkage
     tree (cached in turn) is cut once per candidate."""
+    # one cache key however the caller spells the arguments (graph alone, or graph, depth, measure)
+    return _consensus_graph(graph, depth, measure)
+
+
+@lru_cache(maxsize=4)
+def _consensus_graph(graph: ProbabilityGraph, depth: int, measure: str) -> ProbabilityGraph:
     n = graph.n_nodes
     C = consensus_similarity(graph.matrix(), depth, measure)
     i, j = np.triu_indices(n, k=1)

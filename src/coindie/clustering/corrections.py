@@ -219,9 +219,8 @@ def corrected_clusters(
     ``components`` keeps the forced links at any τ (even 1); the other methods cluster the corrected
     graph (forced links at probability 1, cut ones at 0).
     """
-    algorithm = get_algorithm(
-        method, threshold=threshold, **params
-    )  # the parameters checked by their declarations
+    # the parameters checked by their declarations
+    algorithm = get_algorithm(method, threshold=threshold, **params)
     corrected = corrected_graph(graph, corrections)
     if method != ConnectedComponents.NAME or corrected.n_nodes == 0:
         return algorithm.fit(corrected).clustering_

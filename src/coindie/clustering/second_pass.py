@@ -26,6 +26,7 @@ from typing import Any
 import numpy as np
 
 from coindie.clustering.algorithms import Clustering, cluster, method_params
+from coindie.clustering.consensus import COSINE, SHARED
 from coindie.clustering.graph import ProbabilityGraph
 from coindie.clustering.threshold import ThresholdChoice, select_threshold_unsupervised
 
@@ -37,7 +38,7 @@ CLEAR_SILHOUETTE = 0.6
 #: How the consensus compares two faces' rows in each pass (:mod:`coindie.clustering.consensus`): by the
 #: weight they share where the dies may stand out, by direction alone once each face's pull is taken off
 #: (its remaining link strength is still more its wear than its die).
-FIRST_MEASURE, SECOND_MEASURE = "shared", "cosine"
+FIRST_MEASURE, SECOND_MEASURE = SHARED, COSINE
 
 
 @dataclass(frozen=True)

@@ -23,8 +23,8 @@ import numpy as np
 from numpy.typing import NDArray
 
 from coindie.arrays import FloatArray
-from coindie.clustering.algorithms import AverageLinkage, ConsensusLinkage, get_algorithm
-from coindie.clustering.consensus import consensus_graph
+from coindie.clustering.algorithms import AverageLinkage, ConsensusLinkage, get_algorithm, method_params
+from coindie.clustering.consensus import SHARED, consensus_graph
 from coindie.clustering.evaluation import evaluate
 from coindie.clustering.graph import ProbabilityGraph
 from coindie.clustering.modularity import link_weights, modularity
@@ -81,7 +81,7 @@ def select_threshold_unsupervised(
     method: str = "components",
     thresholds: Sequence[float] | None = None,
     criterion: str = "silhouette",
-    measure: str = "shared",
+    measure: str = SHARED,
 ) -> ThresholdChoice:
     """The τ whose clustering of ``graph`` has the best mean silhouette on ``1 - p``, without labels.
 
@@ -101,8 +101,8 @@ def select_threshold_unsupervised(
         raise ParameterError(f"The criterion must be 'silhouette' or 'modularity'. Got {criterion!r}.")
     if criterion == "modularity":
         default = CONSENSUS_GRID if method == ConsensusLinkage.NAME else threshold_grid()
-        extra = {"measure": measure} if method == ConsensusLinkage.NAME else {}
-        return _modularity_cut(graph, method, default if thresholds is None else thresholds, extra)
+        params = method_params(method, measure=measure)
+        return _modularity_cut(graph, method, default if thresholds is None else thresholds, params)
     if method == ConsensusLinkage.NAME:
         grid = CONSENSUS_GRID if thresholds is None else thresholds
         return select_threshold_unsupervised(
