@@ -191,16 +191,16 @@ def _side_graph(
     across: dict[str, Any] | None,
 ) -> Any:
     """One side's graph of probabilities calibrated on the hoard, after each face's pull (fitted across
-    the clusters ``across``) is taken off, as ``Project.probability_graph(side, across=...)``; the
-    weights kept in ``last``, and whether the first pass's scores separate."""
+    the clusters ``across``) is taken off, as ``Project.probability_graph(side, across=...)`` (the bench
+    scores each pair with each scorer, so it cannot read the project's stored probabilities); the weights
+    kept in ``last``, and whether the first pass's scores separate."""
     from coindie.clustering import ProbabilityGraph
-    from coindie.similarity.calibration import calibrated_probabilities
-    from coindie.similarity.face_effects import without_face_effects_across
+    from coindie.similarity.calibration import calibrated_side
 
-    if across is not None:
-        sources, targets = [p["source"] for p in pairs], [p["target"] for p in pairs]
-        raw = without_face_effects_across(raw, valid, sources, targets, across)
-    last["weights"], calibration = calibrated_probabilities(raw, valid, prior=populations)
+    sources, targets = [p["source"] for p in pairs], [p["target"] for p in pairs]
+    last["weights"], calibration = calibrated_side(
+        raw, valid, sources, targets, across=across, prior=populations
+    )
     if across is None:
         last["separates"] = calibration.separates
     edges = [(p["source"], p["target"], float(w)) for p, w in zip(pairs, last["weights"], strict=True)]

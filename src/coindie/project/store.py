@@ -29,6 +29,7 @@ from coindie.similarity.calibration import (
     MIXTURE_THRESHOLD,
     HoardCalibration,
     calibrated_probabilities,
+    calibrated_side,
 )
 
 if TYPE_CHECKING:
@@ -512,7 +513,6 @@ class Project:
         pairs across its clusters, is taken off before the calibration
         (:mod:`coindie.similarity.face_effects`)."""
         from coindie.clustering import ProbabilityGraph
-        from coindie.similarity.face_effects import without_face_effects_across
 
         faces = [s.face_id for s in self.scans("ok") if side is None or s.side == side]
         known = set(faces)
@@ -522,16 +522,14 @@ class Project:
         weights = np.array([float(p["probability"] or 0.0) for p in pairs])
         if calibrated:
             valid = np.array([scored(p) for p in pairs], dtype=bool)
-            if across is not None and pairs:
-                sources, targets = [p["source"] for p in pairs], [p["target"] for p in pairs]
-                weights = without_face_effects_across(weights, valid, sources, targets, across)
             for one_side in {p["side"] for p in pairs}:
                 on = np.array([p["side"] == one_side for p in pairs])
+                mine = [p for p, o in zip(pairs, on, strict=True) if o]
                 prior, what = self._calibration_start(one_side, params_hash)
-                cap = _max_same_share([p for p, o in zip(pairs, on, strict=True) if o])
-                weights[on], _ = calibrated_probabilities(
-                    weights[on], valid[on], prior=prior, what=what, max_same_share=cap
-                )
+                weights[on], _ = calibrated_side(
+                    weights[on], valid[on], [p["source"] for p in mine], [p["target"] for p in mine],
+                    across=across, prior=prior, what=what, max_same_share=_max_same_share(mine),
+                )  # fmt: skip
         edges = [(p["source"], p["target"], float(w)) for p, w in zip(pairs, weights, strict=True)]
         return ProbabilityGraph.from_edges(edges, faces, where=str(self.folder))
 

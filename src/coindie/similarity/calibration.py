@@ -31,7 +31,7 @@ kept and :attr:`HoardCalibration.message` says so in words, with the numbers, fo
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import asdict, dataclass
 from typing import Any
 
@@ -184,6 +184,29 @@ def calibrated_probabilities(
     out = np.zeros_like(p)
     out[ok] = calibration.probability(log_odds(p[ok]))
     return out, calibration
+
+
+def calibrated_side(
+    probabilities: ArrayLike,
+    valid: ArrayLike,
+    sources: Sequence[str],
+    targets: Sequence[str],
+    *,
+    across: Mapping[str, object] | None = None,
+    prior: Mapping[str, tuple[float, float]] | None = None,
+    what: str = "same-side pairs",
+    max_same_share: float = MAX_SAME_SHARE,
+) -> tuple[FloatArray, HoardCalibration]:
+    """:func:`calibrated_probabilities` of one side's pairs, named by their faces (``sources``,
+    ``targets``); with ``across`` (a first clustering, face id -> label), each face's pull on its scores,
+    fitted on the pairs across those clusters, is taken off first
+    (:func:`coindie.similarity.face_effects.without_face_effects_across`)."""
+    from coindie.similarity.face_effects import without_face_effects_across
+
+    p = np.asarray(probabilities, dtype=np.float64)
+    if across is not None and len(p):
+        p = without_face_effects_across(p, valid, sources, targets, across)
+    return calibrated_probabilities(p, valid, prior=prior, what=what, max_same_share=max_same_share)
 
 
 def _implausible(
