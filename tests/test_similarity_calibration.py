@@ -79,6 +79,25 @@ def test_other_dies_of_one_design_do_not_pass_for_the_same_die() -> None:
     assert (calibrated[same_die] > MIXTURE_THRESHOLD).mean() > 0.85
 
 
+def test_same_die_scores_piled_at_the_largest_log_odds_still_claim_the_lower_same_die_pairs() -> None:
+    """A sharp scorer on a clean hoard: most same-die probabilities round to 1, so their log-odds pile
+    at the clip. The same-die component must not shrink onto that pile and hand the same-die pairs just
+    below it to the other dies (it did, at the smallest scale: a pair at log-odds 22 got 0.008)."""
+    rng = np.random.default_rng(11)
+    n = 1500
+    same_die = rng.random(n) < 0.2
+    z = np.where(same_die, rng.normal(40.0, 8.0, n), rng.normal(-2.0, 4.0, n))
+    probabilities = 1.0 / (1.0 + np.exp(-z))  # those above ~37 are exactly 1.0
+    assert (probabilities[same_die] == 1.0).mean() > 0.5
+    calibration = calibrate_hoard(probabilities)
+    assert calibration.separates, calibration.message
+    calibrated = calibration.probability(log_odds(probabilities))
+    lower_same = same_die & (z > 22.0) & (z < 28.0)  # 6 to 7 of the other dies' sd above their mean
+    assert lower_same.sum() >= 10
+    assert (calibrated[lower_same] > MIXTURE_THRESHOLD).all()
+    assert (calibrated[~same_die] > MIXTURE_THRESHOLD).mean() < 0.01
+
+
 def test_scores_of_one_population_are_reported_as_not_separating() -> None:
     rng = np.random.default_rng(6)
     z = rng.normal(-2.0, 1.5, 500)

@@ -52,6 +52,10 @@ MAX_SAME_SHARE_CANDIDATES = 0.95
 MIN_PAIRS = 10
 #: Log-odds are clipped to +-this before fitting (a probability of exactly 0 or 1 has no finite logit).
 _MAX_LOG_ODDS = 30.0
+#: Probabilities are clipped to [this, 1 - this] before their logit (1.0 and 0.0 have none)...
+_PROBABILITY_CLIP = 1e-13
+#: ... so a same-die population located above this sits on the clip (logit(1 - clip) - 1).
+_SATURATED = float(np.log((1.0 - _PROBABILITY_CLIP) / _PROBABILITY_CLIP)) - 1.0
 #: Smallest scale of a component (log-odds units): no component collapses onto a few pairs.
 _MIN_SD = 0.25
 #: Degrees of freedom of each component's Student-t (fixed: a heavy tail, a finite variance).
@@ -114,7 +118,7 @@ class HoardCalibration:
 
 def log_odds(probabilities: ArrayLike) -> FloatArray:
     """The logit of probabilities, clipped to a finite range."""
-    p = np.clip(np.asarray(probabilities, dtype=np.float64), 1e-13, 1 - 1e-13)
+    p = np.clip(np.asarray(probabilities, dtype=np.float64), _PROBABILITY_CLIP, 1 - _PROBABILITY_CLIP)
     return np.clip(np.log(p) - np.log1p(-p), -_MAX_LOG_ODDS, _MAX_LOG_ODDS)
 
 
@@ -143,6 +147,12 @@ def calibrate_hoard(
         )  # fmt: skip
     means, sds, weights = _fit(z, prior)
     (mean_d, mean_s), (sd_d, sd_s), share = means, sds, float(weights[1])
+    if mean_s > _SATURATED:
+        # most same-die pairs scored beyond what a stored probability holds: their log-odds pile at the
+        # clip, so the spread of their population is unknown, and a scale fitted to the pile would hand
+        # every same-die pair below it to the other dies (a sharp scorer on a clean hoard: a same-die pair
+        # at log-odds 22 got 0.008). It is taken no narrower than the other population's.
+        sd_s = max(sd_s, sd_d)
     separation = float(np.sqrt(2.0) * (mean_s - mean_d) / np.sqrt(sd_s**2 + sd_d**2))
     refused_note = (
         f"; {refused} of {total} ({refused / total:.0%}) refused by the registration" if refused else ""
