@@ -44,7 +44,7 @@ from coindie.scan import Scan
 
 #: The features, in the order of :func:`relief_features`' vector.
 FEATURE_NAMES = ("ncc_fine", "ncc_coarse", "local_median", "local_p90", "overlap")
-#: Targets' canonical frames and height maps kept ready (a 32 mm field at 0.2 mm is 160 x 160 pixels).
+#: Targets' canonical frames and height maps kept ready (a 32 mm field at 0.1 mm is 320 x 320 pixels).
 TARGET_CACHE_SIZE = 64
 #: Points of a face used to fit its canonical frame (a regular subsample of larger clouds).
 _FRAME_POINTS = 6000
@@ -58,7 +58,9 @@ _EPS = 1e-12
 @dataclass(frozen=True)
 class ReliefFeatureSettings(Configurable):
     """How a registered pair becomes :data:`FEATURE_NAMES`. Lengths are in mm on the coin, not on the
-    scanner: they describe the size of a die's details (strokes, pellets), which no scanner changes."""
+    scanner: they describe the size of a die's details (strokes, pellets), which no scanner changes. The
+    fine band (0.3 mm on 0.1 mm pixels) is the scale at which two dies of one type differ: the engraver's
+    placing of each element, about 0.1 mm (docs/clustering.md, "Two scorers")."""
 
     RULES: ClassVar[tuple[Rule, ...]] = (
         Rule(
@@ -70,16 +72,16 @@ class ReliefFeatureSettings(Configurable):
     )
 
     pixel_mm: float = param(
-        0.2, doc="pixel of the square grid both faces are rasterised on", unit="mm", low=0.0, low_open=True
+        0.1, doc="pixel of the square grid both faces are rasterised on", unit="mm", low=0.0, low_open=True
     )
     field_mm: float = param(32.0, doc="side of that grid, centred on the target's origin", unit="mm", low=0.0)
     shape_sigma_mm: float = param(
         3.0, doc="blur of the shape difference taken off the source", unit="mm", low=0.0, low_open=True
     )
-    fine_sigma_mm: float = param(0.6, doc="the fine band: detail below it", unit="mm", low=0.0)
-    coarse_sigma_mm: float = param(2.0, doc="the coarse band: fine_sigma_mm to it", unit="mm", low=0.0)
+    fine_sigma_mm: float = param(0.3, doc="the fine band: detail below it", unit="mm", low=0.0)
+    coarse_sigma_mm: float = param(1.0, doc="the coarse band: fine_sigma_mm to it", unit="mm", low=0.0)
     window_mm: float = param(
-        2.5, doc="Gaussian window of the local correlations", unit="mm", low=0.0, low_open=True
+        1.5, doc="Gaussian window of the local correlations", unit="mm", low=0.0, low_open=True
     )
     margin_mm: float = param(
         0.6, doc="band inside the outlines left out (edge wall, flan border)", unit="mm", low=0.0
@@ -102,6 +104,7 @@ class _Target:
     frame: CanonicalFrame
     heights: FloatArray  # (size, size) heights above the target's plane; NaN outside
     mask: BoolArray
+    inner: BoolArray  # the mask less the margin band inside its outline
 
 
 def relief_features(
@@ -116,47 +119,80 @@ def relief_features(
     moved = source.transformed(np.asarray(T_target_source, dtype=np.float64))
     source_heights = _grid_heights(moved, prepared.frame, settings)
     source_mask = np.isfinite(source_heights)
-    both = _eroded(source_mask, settings) & _eroded(prepared.mask, settings)
+    both = _eroded(source_mask, settings) & prepared.inner
     smaller = min(int(source_mask.sum()), int(prepared.mask.sum()))
     if smaller == 0 or both.sum() < 25:
         return np.zeros(len(FEATURE_NAMES))
     overlap = float((source_mask & prepared.mask).sum()) / smaller
-    a = np.where(both, source_heights, 0.0)
-    b = np.where(both, prepared.heights, 0.0)
-    a = a - np.where(both, _masked_blur(a - b, both, settings.shape_sigma_mm / settings.pixel_mm), 0.0)
-    fine_a, coarse_a = _bands(a, both, settings)
-    fine_b, coarse_b = _bands(b, both, settings)
-    local = _local_ncc(fine_a, fine_b, both, settings.window_mm / settings.pixel_mm)
+    # every blur below is of values and a mask that are zero outside ``both``: cropped to its bounding box
+    # and blurred with zeros beyond the crop, they come out as on the whole field, for a fraction of the work
+    window = _crop(both, 1)
+    both, source_heights, target_heights = both[window], source_heights[window], prepared.heights[window]
+    weights = _MaskWeights(both)
+    a = np.where(both, source_heights, 0.0).astype(np.float32)
+    b = np.where(both, target_heights, 0.0).astype(np.float32)
+    a = a - np.where(both, weights.blur(a - b, settings.shape_sigma_mm / settings.pixel_mm), 0.0)
+    fine_a, coarse_a = _bands(a, weights, settings)
+    fine_b, coarse_b = _bands(b, weights, settings)
+    local = _local_ncc(fine_a, fine_b, weights, settings.window_mm / settings.pixel_mm)
     median, p90 = np.percentile(local, [50, 90]) if len(local) else (0.0, 0.0)
     return np.array(
         [_ncc(fine_a, fine_b, both), _ncc(coarse_a, coarse_b, both), median, p90, overlap], dtype=np.float64
     )
 
 
-def _bands(heights: FloatArray, mask: BoolArray, settings: ReliefFeatureSettings) -> tuple[FloatArray, ...]:
-    fine_blur = _masked_blur(heights, mask, settings.fine_sigma_mm / settings.pixel_mm)
-    coarse_blur = _masked_blur(heights, mask, settings.coarse_sigma_mm / settings.pixel_mm)
+class _MaskWeights:
+    """A mask and its Gaussian blurs, each computed once however many images are blurred under it."""
+
+    def __init__(self, mask: BoolArray) -> None:
+        self.mask = mask
+        self._blurred: dict[float, FloatArray] = {}
+
+    def weight(self, sigma_px: float) -> FloatArray:
+        if sigma_px not in self._blurred:
+            self._blurred[sigma_px] = _gaussian(self.mask.astype(np.float32), sigma_px)
+        return self._blurred[sigma_px]
+
+    def blur(self, values: FloatArray, sigma_px: float) -> FloatArray:
+        """Gaussian blur of the values inside the mask, normalised by the blurred mask (no edge darkening)."""
+        blurred = _gaussian(np.where(self.mask, values, 0.0).astype(np.float32), sigma_px)
+        return blurred / np.maximum(self.weight(sigma_px), _EPS)
+
+
+def _gaussian(values: FloatArray, sigma_px: float) -> FloatArray:
+    return ndimage.gaussian_filter(values, sigma_px, mode="constant", cval=0.0)
+
+
+def _crop(mask: BoolArray, pad_px: float) -> tuple[slice, slice]:
+    """The bounding box of ``mask`` grown by ``pad_px`` pixels on each side, within the grid."""
+    pad = int(np.ceil(pad_px))
+    rows, cols = np.flatnonzero(mask.any(axis=1)), np.flatnonzero(mask.any(axis=0))
+    return (
+        slice(max(0, rows[0] - pad), rows[-1] + pad + 1),
+        slice(max(0, cols[0] - pad), cols[-1] + pad + 1),
+    )
+
+
+def _bands(
+    heights: FloatArray, weights: _MaskWeights, settings: ReliefFeatureSettings
+) -> tuple[FloatArray, ...]:
+    fine_blur = weights.blur(heights, settings.fine_sigma_mm / settings.pixel_mm)
+    coarse_blur = weights.blur(heights, settings.coarse_sigma_mm / settings.pixel_mm)
+    mask = weights.mask
     return np.where(mask, heights - fine_blur, 0.0), np.where(mask, fine_blur - coarse_blur, 0.0)
-
-
-def _masked_blur(values: FloatArray, mask: BoolArray, sigma_px: float) -> FloatArray:
-    """Gaussian blur of the values inside ``mask``, normalised by the blurred mask (no edge darkening)."""
-    weight = ndimage.gaussian_filter(mask.astype(np.float64), sigma_px)
-    blurred = ndimage.gaussian_filter(np.where(mask, values, 0.0), sigma_px)
-    return blurred / np.maximum(weight, _EPS)
 
 
 def _ncc(a: FloatArray, b: FloatArray, mask: BoolArray) -> float:
     x, y = a[mask] - a[mask].mean(), b[mask] - b[mask].mean()
+    x, y = x.astype(np.float64), y.astype(np.float64)
     denominator = np.sqrt(np.dot(x, x) * np.dot(y, y))
     return float(np.dot(x, y) / denominator) if denominator > _EPS else 0.0
 
 
-def _local_ncc(a: FloatArray, b: FloatArray, mask: BoolArray, sigma_px: float) -> FloatArray:
+def _local_ncc(a: FloatArray, b: FloatArray, weights: _MaskWeights, sigma_px: float) -> FloatArray:
     """Windowed correlations of two zero-mean band images at the pixels whose window is mostly overlap."""
-    weight = ndimage.gaussian_filter(mask.astype(np.float64), sigma_px)
-    ab, aa, bb = (ndimage.gaussian_filter(p, sigma_px) for p in (a * b, a * a, b * b))
-    keep = mask & (weight > _MIN_WINDOW_WEIGHT)
+    ab, aa, bb = (_gaussian(p, sigma_px) for p in (a * b, a * a, b * b))
+    keep = weights.mask & (weights.weight(sigma_px) > _MIN_WINDOW_WEIGHT)
     return ab[keep] / np.sqrt(np.maximum(aa[keep] * bb[keep], _EPS))
 
 
@@ -164,7 +200,11 @@ def _eroded(mask: BoolArray, settings: ReliefFeatureSettings) -> BoolArray:
     margin_px = settings.margin_mm / settings.pixel_mm
     if margin_px <= 0:
         return mask
-    return ndimage.distance_transform_edt(mask) > margin_px
+    inner = np.zeros_like(mask)
+    if mask.any():
+        window = _crop(mask, 1)  # the distance transform of the footprint's box: the rest is outside
+        inner[window] = ndimage.distance_transform_edt(mask[window]) > margin_px
+    return inner
 
 
 def _grid_heights(scan: Scan, frame: CanonicalFrame, settings: ReliefFeatureSettings) -> FloatArray:
@@ -199,7 +239,8 @@ def _prepared_target(target: Scan, settings: ReliefFeatureSettings) -> _Target:
     stride = -(-target.n_points // _FRAME_POINTS)
     frame = canonical_frame(target.subset(np.arange(0, target.n_points, stride)))
     heights = _grid_heights(target, frame, settings)
-    prepared = _Target(frame, heights, np.isfinite(heights))
+    mask = np.isfinite(heights)
+    prepared = _Target(frame, heights, mask, _eroded(mask, settings))
     with _LOCK:
         _CACHE[key] = prepared
         while len(_CACHE) > TARGET_CACHE_SIZE:
