@@ -126,7 +126,7 @@ def relief_features(
     overlap = float((source_mask & prepared.mask).sum()) / smaller
     # every blur below is of values and a mask that are zero outside ``both``: cropped to its bounding box
     # and blurred with zeros beyond the crop, they come out as on the whole field, for a fraction of the work
-    window = _crop(both, 1)
+    window = _crop(both)
     both, source_heights, target_heights = both[window], source_heights[window], prepared.heights[window]
     weights = _MaskWeights(both)
     a = np.where(both, source_heights, 0.0).astype(np.float32)
@@ -163,14 +163,11 @@ def _gaussian(values: FloatArray, sigma_px: float) -> FloatArray:
     return ndimage.gaussian_filter(values, sigma_px, mode="constant", cval=0.0)
 
 
-def _crop(mask: BoolArray, pad_px: float) -> tuple[slice, slice]:
-    """The bounding box of ``mask`` grown by ``pad_px`` pixels on each side, within the grid."""
-    pad = int(np.ceil(pad_px))
+def _crop(mask: BoolArray) -> tuple[slice, slice]:
+    """The bounding box of ``mask`` and a one-pixel border, within the grid (the border keeps a row of
+    background around the footprint for the distance transform; the blurs need none)."""
     rows, cols = np.flatnonzero(mask.any(axis=1)), np.flatnonzero(mask.any(axis=0))
-    return (
-        slice(max(0, rows[0] - pad), rows[-1] + pad + 1),
-        slice(max(0, cols[0] - pad), cols[-1] + pad + 1),
-    )
+    return slice(max(0, rows[0] - 1), rows[-1] + 2), slice(max(0, cols[0] - 1), cols[-1] + 2)
 
 
 def _bands(
@@ -202,7 +199,7 @@ def _eroded(mask: BoolArray, settings: ReliefFeatureSettings) -> BoolArray:
         return mask
     inner = np.zeros_like(mask)
     if mask.any():
-        window = _crop(mask, 1)  # the distance transform of the footprint's box: the rest is outside
+        window = _crop(mask)  # the distance transform of the footprint's box: the rest is outside
         inner[window] = ndimage.distance_transform_edt(mask[window]) > margin_px
     return inner
 
