@@ -9,6 +9,9 @@ from scipy import ndimage
 from coindie.registration.relief_search import (
     ReliefImage,
     _evidence_near_peak,
+    _peak_shift,
+    _significant_peaks,
+    _turn_operator,
     align_reliefs,
     correlate_turns,
     masked_ncc,
@@ -191,3 +194,40 @@ def test_the_peak_is_found_when_the_overlap_share_exceeds_one() -> None:
     share[2, 3] = 1.001
     evidence = _evidence_near_peak(ncc, share)
     assert np.unravel_index(int(np.argmax(evidence)), evidence.shape) == (2, 3)
+
+
+def test_the_turn_operator_is_rotate_image() -> None:
+    """The sweep's sparse operator turns an image and its mask as :func:`rotate_image` does, at every
+    angle, about an off-centre point, up to the edges (zero where the sample falls outside)."""
+    rng = np.random.default_rng(5)
+    image = ndimage.gaussian_filter(rng.standard_normal((31, 31)), 1.5)
+    mask = ndimage.binary_erosion(np.ones((31, 31), dtype=bool), iterations=3) & (image > -0.3)
+    centre = (14.7, 15.2)
+    angles = tuple(float(a) for a in np.radians([0.0, 8.0, 45.0, 90.0, 173.0, 271.5]))
+    turned = _turn_operator(image.shape, centre, angles) @ np.stack([image.ravel(), mask.ravel()], axis=1)
+    turned = turned.reshape(len(angles), *image.shape, 2)
+    for i, angle in enumerate(angles):
+        expected = rotate_image(image, angle, centre=np.asarray(centre))
+        assert np.abs(turned[i, ..., 0] - expected).max() < 1e-12
+        expected_mask = rotate_image(mask.astype(np.float64), angle, centre=np.asarray(centre)) > 0.5
+        assert np.array_equal(turned[i, ..., 1] > 0.5, expected_mask)
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_the_batched_peaks_are_the_single_image_peaks(seed: int) -> None:
+    """:func:`_significant_peaks` over a stack gives each image's peak significance and sub-pixel place as
+    the one-image path does: smooth correlations, one peak on the image's border, and one image whose
+    correlations are all negative (where a neighbour outside the candidates can weigh the most)."""
+    rng = np.random.default_rng(seed)
+    ncc = np.stack([ndimage.gaussian_filter(rng.standard_normal((23, 27)), 2) for _ in range(6)])
+    ncc = np.clip(ncc / np.abs(ncc).max() * 0.9, -1, 1).astype(np.float32)
+    ncc[1, 0, 5] = 0.95  # a peak on the border: no sub-pixel part across it
+    ncc[2] = -np.abs(ncc[2]) - 0.05
+    overlap = rng.uniform(50.0, 400.0, ncc.shape).astype(np.float32)
+    full = 300.0
+    best, peaks = _significant_peaks(ncc, overlap, full)
+    for i in range(len(ncc)):
+        evidence = _evidence_near_peak(ncc[i], overlap[i] / full)
+        assert best[i] == evidence.max()
+        shift = _peak_shift(evidence, ncc.shape[1:])  # (x, y) of the peak from the far corner
+        assert np.allclose(peaks[i], np.asarray(ncc.shape[1:]) - 1.0 + shift[::-1], rtol=0, atol=1e-12)
