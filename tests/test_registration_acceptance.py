@@ -85,6 +85,15 @@ def test_footprint_covers_its_own_points_and_not_far_ones(pair) -> None:
     assert isinstance(footprint, Footprint) and footprint.up @ np.array([0, 0, 1.0]) > 0.99
 
 
+def test_plane_up_faces_the_normals_and_is_the_footprints(pair) -> None:
+    cloud = Cloud.of(pair.target)
+    flipped = Cloud(cloud.points, -cloud.normals)
+    assert cloud.plane.up @ np.array([0, 0, 1.0]) > 0.99
+    assert flipped.plane.up @ np.array([0, 0, 1.0]) < -0.99
+    assert np.array_equal(cloud.footprint.up, cloud.plane.up)
+    assert np.array_equal(Footprint.of(cloud.points, cloud.normals).cells, cloud.footprint.cells)
+
+
 def test_relief_keeps_its_pose_of_a_bent_pair() -> None:
     """The default method on a pair with one face folded by 15°: a pose, valid."""
     pair = make_coin_pair(seed=7, radius=8.0, spacing=0.1)

@@ -191,7 +191,7 @@ class Pipeline:
         with timer("score"):
             T = np.eye(4) if estimate.T_target_source is None else estimate.T_target_source
             scored = source_cloud.points[:: -(-len(source_cloud.points) // self.check.max_points)]
-            up = source_cloud.footprint.up if self.check.overlap == "footprint" else None
+            up = source_cloud.plane.up if self.check.overlap == "footprint" else None
             figures = alignment(scored, target_cloud, T, self.check.overlap_distance, source_up=up)
         reason = estimate.failure or self.check.judge(figures)
         timer.seconds["total"] = time.perf_counter() - start

@@ -120,9 +120,14 @@ class Cloud:
         return cKDTree(self.points)
 
     @cached_property
+    def plane(self) -> Plane:
+        """The face's best-fit plane, its up side towards the relief (see :class:`Plane`)."""
+        return Plane.fit(self.points, self.normals)
+
+    @cached_property
     def footprint(self) -> Footprint:
         """The face's outline in its best-fit plane (see :class:`Footprint`)."""
-        return Footprint.of(self.points, self.normals)
+        return Footprint.of(self.points, self.normals, plane=self.plane)
 
     @cached_property
     def key(self) -> bytes:
@@ -142,6 +147,29 @@ class Cloud:
 
 #: Points of a face that fit its footprint's plane (a regular subsample of larger clouds).
 _FOOTPRINT_FIT_POINTS = 5000
+
+
+@dataclass(frozen=True)
+class Plane:
+    """A face's best-fit plane: ``origin``, in-plane ``axes`` (2, 3) and ``up``, the side the normals
+    face (towards the relief). A source face needs only its up direction (the tilt test), a target face
+    its :class:`Footprint` too: the plane is kept apart so that a face seen only as a source never pays for
+    the footprint's cells."""
+
+    origin: FloatArray
+    axes: FloatArray
+    up: FloatArray
+
+    @classmethod
+    def fit(cls, points: FloatArray, normals: FloatArray | None = None) -> Plane:
+        fit = points[:: -(-len(points) // _FOOTPRINT_FIT_POINTS)]
+        origin = fit.mean(axis=0)
+        _, _, vt = np.linalg.svd(fit - origin, full_matrices=False)
+        up = vt[2]
+        towards = normals.mean(axis=0) if normals is not None and len(normals) else np.array([0.0, 0.0, 1.0])
+        if float(up @ towards) < 0:
+            up = -up
+        return cls(origin, vt[:2], up)
 
 
 @dataclass(frozen=True, eq=False)
@@ -164,17 +192,19 @@ class Footprint:
     PIXEL_MM = 0.5
 
     @classmethod
-    def of(cls, points: FloatArray, normals: FloatArray | None = None, pixel: float = PIXEL_MM) -> Footprint:
+    def of(
+        cls,
+        points: FloatArray,
+        normals: FloatArray | None = None,
+        pixel: float = PIXEL_MM,
+        *,
+        plane: Plane | None = None,
+    ) -> Footprint:
+        """The footprint of ``points`` over their best-fit plane (``plane`` when already fitted)."""
         from scipy import ndimage
 
-        fit = points[:: -(-len(points) // _FOOTPRINT_FIT_POINTS)]
-        origin = fit.mean(axis=0)
-        _, _, vt = np.linalg.svd(fit - origin, full_matrices=False)
-        up = vt[2]
-        towards = normals.mean(axis=0) if normals is not None and len(normals) else np.array([0.0, 0.0, 1.0])
-        if float(up @ towards) < 0:
-            up = -up
-        axes = vt[:2]
+        plane = Plane.fit(points, normals) if plane is None else plane
+        origin, axes, up = plane.origin, plane.axes, plane.up
         uv = (points - origin) @ axes.T
         corner = uv.min(axis=0) - pixel
         index = np.floor((uv - corner) / pixel).astype(np.int64)
