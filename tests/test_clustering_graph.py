@@ -17,14 +17,12 @@ from coindie.clustering import (
     write_clusters,
     write_graph,
 )
-from real_data import RIEDONES3D
-
-BEARD = RIEDONES3D / "beard_probability_graph.json"
+from real_data import real_file
 
 
 @pytest.fixture(scope="module")
 def beard() -> ProbabilityGraph:
-    return read_graph(BEARD)
+    return read_graph(real_file("beard_probability_graph.json"))
 
 
 def _edge_map(graph: ProbabilityGraph) -> dict[frozenset, float]:
@@ -32,7 +30,7 @@ def _edge_map(graph: ProbabilityGraph) -> dict[frozenset, float]:
 
 
 def test_reads_the_real_beard_graph(beard: ProbabilityGraph) -> None:
-    raw = json.loads(BEARD.read_text())
+    raw = json.loads(real_file("beard_probability_graph.json").read_text())
     assert beard.n_nodes == 81 and beard.n_edges == 3240 == len(raw["links"])
     assert beard.nodes[0] == "L0001D" and beard.nodes[-1] == "L0081D"
     edges = _edge_map(beard)

@@ -10,7 +10,7 @@ import pytest
 
 from coindie.errors import ParameterError
 from coindie.similarity import ClassifierError, HistogramSettings, SameDieClassifier
-from real_data import RIEDONES3D
+from real_data import real_file
 
 CENTRES = (np.arange(70) + 0.5) * 0.6 / 70
 
@@ -63,7 +63,7 @@ def test_save_and_load_round_trip(fitted: SameDieClassifier, tmp_path: Path) -> 
 
 
 def test_the_papers_scaler_imports_and_stays_fixed() -> None:
-    path = RIEDONES3D / "histogram_scaler.json"
+    path = real_file("histogram_scaler.json")
     raw = json.loads(path.read_text())
     model = SameDieClassifier.from_paper_scaler(path)
     assert model.mean is not None and model.mean.shape == (70,)
