@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import itertools
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -19,15 +18,7 @@ from coindie.clustering import (
     select_threshold_unsupervised,
 )
 from coindie.errors import ParameterError
-
-BEARD = (
-    Path(__file__).resolve().parents[1]
-    / ".."
-    / "shared"
-    / "data"
-    / "riedones3d"
-    / "beard_probability_graph.json"
-)
+from real_data import real_file
 
 
 def _dies_graph(
@@ -118,7 +109,7 @@ def test_threshold_chosen_on_a_validation_set() -> None:
 
 def test_real_beard_graph_cluster_counts() -> None:
     """The paper reports 7 dies (one coin misplaced) for the 81 obverses with beard."""
-    graph = read_graph(BEARD)
+    graph = read_graph(real_file("beard_probability_graph.json"))
     counts = {m: cluster(graph, m, 0.95).n_clusters for m in METHODS}
     assert counts["components"] == 10  # at the paper's tau = 0.95
     choice = select_threshold_unsupervised(graph)

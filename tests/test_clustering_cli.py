@@ -9,15 +9,12 @@ from typer.testing import CliRunner
 
 from coindie.cli.app import app
 from coindie.clustering import read_clusters
+from real_data import real_file
 
-BEARD = (
-    Path(__file__).resolve().parents[1]
-    / ".."
-    / "shared"
-    / "data"
-    / "riedones3d"
-    / "beard_probability_graph.json"
-)
+
+def _beard() -> str:
+    """The real beard graph of the paper (the test skips without ../shared beside the clone)."""
+    return str(real_file("beard_probability_graph.json"))
 
 
 def _invoke(*args: str):  # noqa: ANN202
@@ -26,7 +23,7 @@ def _invoke(*args: str):  # noqa: ANN202
 
 def test_cluster_the_real_beard_graph_at_the_papers_threshold(tmp_path: Path) -> None:
     out = tmp_path / "clusters.csv"
-    result = _invoke("cluster", str(BEARD), "-o", str(out), "--json")
+    result = _invoke("cluster", _beard(), "-o", str(out), "--json")
     assert result.exit_code == 0, result.output
     report = json.loads(result.output)
     assert report["threshold"] == 0.95 and report["n_faces"] == 81 and report["n_clusters"] == 10
@@ -35,11 +32,11 @@ def test_cluster_the_real_beard_graph_at_the_papers_threshold(tmp_path: Path) ->
 
 def test_auto_threshold_and_eval_against_labels(tmp_path: Path) -> None:
     auto = tmp_path / "auto.csv"
-    result = _invoke("cluster", str(BEARD), "-o", str(auto), "--auto", "--json")
+    result = _invoke("cluster", _beard(), "-o", str(auto), "--auto", "--json")
     assert result.exit_code == 0, result.output
     assert 7 <= json.loads(result.output)["n_clusters"] <= 9
     paper = tmp_path / "paper.csv"
-    assert _invoke("cluster", str(BEARD), "-o", str(paper), "--threshold", "0.95").exit_code == 0
+    assert _invoke("cluster", _beard(), "-o", str(paper), "--threshold", "0.95").exit_code == 0
     # The two clusterings against each other: the 0.95 clusters only split the automatic ones.
     result = _invoke("eval", str(paper), str(auto), "--json")
     scores = json.loads(result.output)
