@@ -8,21 +8,23 @@
   per-face work is paid once per face and each pair costs only this).
 
 Same-die pairs of the registration test split, turned as in ``coindie bench registration``; BLAS is held to
-one thread. Prints a table of the median seconds per pair and the stage timings (no pass/fail).
+one thread. Prints a table of the median seconds per pair and the stage timings (no pass/fail). What a
+process keeps whatever the faces (``relief``'s turn operators, one per image size; FFT plans) stays
+from one pair to the next, as in a study. To compare two commits on a shared machine, whose speed drifts
+between runs, use ``bench_registration_paired.py``.
 """
 
 from __future__ import annotations
 
 import argparse
 import statistics
-import time
 from pathlib import Path
 
 import numpy as np
 from rich.progress import track
 from threadpoolctl import threadpool_limits
 
-from coindie.bench.registration import _grid_scan, parse_method, plan_pairs
+from coindie.bench.registration import SITUATIONS, _grid_scan, parse_method, plan_pairs, timed_in_situation
 from coindie.io.truth import load_truth
 from coindie.registration import get_method
 from coindie.registration.learned.cache import clear_caches
@@ -46,18 +48,13 @@ def main() -> None:
     ]
     rows = []
     with threadpool_limits(limits=1):
-        for situation in ("cold", "new source", "all-pairs"):
+        for situation in SITUATIONS:
             times, stages = [], {}
             for source, target in track(clouds, description=situation):
                 method = get_method(name, **params)  # a fresh method: nothing cached
                 clear_caches()  # nor kept by the learned descriptors from an earlier pair
-                if situation in ("new source", "all-pairs"):
-                    method.register(target, target)
-                if situation == "all-pairs":
-                    method.register(source, source)
-                start = time.perf_counter()
-                result = method.register(source, target)
-                times.append(time.perf_counter() - start)
+                seconds, result = timed_in_situation(situation, method, source, target)
+                times.append(seconds)
                 for stage, seconds in result.timings.items():
                     stages.setdefault(stage, []).append(seconds)
             medians = {k: float(np.median(v)) for k, v in stages.items()}

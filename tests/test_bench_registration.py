@@ -10,8 +10,16 @@ import numpy as np
 import pytest
 from typer.testing import CliRunner
 
-from coindie.bench.registration import benchmark_registration, plan_pairs, random_turn, read_pairs
+from coindie.bench.registration import (
+    SITUATIONS,
+    benchmark_registration,
+    plan_pairs,
+    random_turn,
+    read_pairs,
+    timed_in_situation,
+)
 from coindie.cli.app import app
+from coindie.errors import ParameterError
 from coindie.io.truth import TruthError, load_truth
 from coindie.transforms import rotation_angle_deg
 
@@ -109,7 +117,6 @@ def test_cli_runs_the_benchmark_and_rejects_unknown_methods(hoard, tmp_path) -> 
 
 def test_a_method_label_may_carry_checked_parameters() -> None:
     from coindie.bench.registration import parse_method
-    from coindie.errors import ParameterError
 
     assert parse_method("relief") == ("relief", {})
     assert parse_method("fcgf+icp[matcher.n_points=250; teaser.noise_bound=0.3]") == (
@@ -124,3 +131,29 @@ def test_a_method_label_may_carry_checked_parameters() -> None:
     ]:
         with pytest.raises(ParameterError, match=message):
             parse_method(bad)
+
+
+class _Recorder:
+    """A registration method that records what it is asked."""
+
+    def __init__(self) -> None:
+        self.calls: list[tuple[str, str]] = []
+
+    def register(self, source: str, target: str) -> str:
+        self.calls.append((source, target))
+        return f"{source}->{target}"
+
+
+@pytest.mark.parametrize(
+    "situation, seen",
+    [("cold", []), ("new source", [("b", "b")]), ("all-pairs", [("b", "b"), ("a", "a")])],
+)
+def test_a_situation_shows_the_method_its_faces_first(situation: str, seen: list) -> None:
+    """The speed benchmarks' situations: the faces a study has already met are registered first, and
+    only the pair itself is timed and returned."""
+    method = _Recorder()
+    seconds, result = timed_in_situation(situation, method, "a", "b")
+    assert method.calls == [*seen, ("a", "b")] and result == "a->b" and seconds >= 0.0
+    assert situation in SITUATIONS
+    with pytest.raises(ParameterError, match="situation"):
+        timed_in_situation("warm", _Recorder(), "a", "b")

@@ -21,6 +21,7 @@ from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 from scipy.spatial.transform import Rotation
@@ -126,6 +127,26 @@ def run_pair(job: PairJob) -> dict[str, object]:
         "valid": result.valid, "residual_mm": result.residual, "time_s": wall, "cpu_s": cpu,
         "reason": result.reason,
     }  # fmt: skip
+
+
+#: How a die study meets a pair (benchmarks/bench_registration_speed.py): both faces new to the method;
+#: the target seen before (the benchmark's situation); both seen (an all-pairs study's pairs).
+SITUATIONS = ("cold", "new source", "all-pairs")
+
+
+def timed_in_situation(situation: str, method: Any, source: Any, target: Any) -> tuple[float, Any]:
+    """Seconds ``method.register(source, target)`` takes in ``situation`` (one of :data:`SITUATIONS`:
+    the faces it has seen are registered onto themselves first, untimed), and its result. The method
+    should be fresh (nothing cached); any registration method of any version of the package."""
+    if situation not in SITUATIONS:
+        raise ParameterError(f"situation must be one of {', '.join(SITUATIONS)}, not {situation!r}")
+    if situation in ("new source", "all-pairs"):
+        method.register(target, target)
+    if situation == "all-pairs":
+        method.register(source, source)
+    start = time.perf_counter()
+    result = method.register(source, target)
+    return time.perf_counter() - start, result
 
 
 @lru_cache(maxsize=64)

@@ -1,0 +1,114 @@
+"""Time a registration method per pair against another commit of coindie, pair by pair in one process.
+
+    git worktree add /tmp/base 149e3ad
+    .venv/bin/python benchmarks/bench_registration_paired.py /tmp/base HOARD [--method relief] [--pairs 60]
+    git worktree remove /tmp/base
+
+A shared machine's speed drifts by a fifth over a minute, more than most changes worth timing; two runs
+of ``bench_registration_speed.py`` one after the other compare the drift as much as the code. Here both
+versions register each pair in turn (which goes first alternates), in the three situations of
+``bench_registration_speed.py``, so that each pair's difference is measured under the same conditions;
+the table gives the median of those differences beside each version's median time. The other commit's
+package is copied and imported under another name (``coindie_base``). Same pairs and turns as
+``coindie bench registration``; BLAS held to one thread; no pass/fail.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import re
+import shutil
+import sys
+import tempfile
+from pathlib import Path
+from types import ModuleType
+
+import numpy as np
+from rich.progress import track
+from threadpoolctl import threadpool_limits
+
+import coindie.registration
+from coindie.bench.registration import SITUATIONS, _grid_scan, parse_method, plan_pairs, timed_in_situation
+from coindie.io.truth import load_truth
+from coindie.registration.learned.cache import clear_caches
+
+
+def import_base(checkout: Path, into: Path) -> ModuleType:
+    """The ``coindie`` package of another checkout, importable as ``coindie_base`` (its own imports
+    renamed), for the length of this process."""
+    source = checkout / "src" / "coindie"
+    if not (source / "__init__.py").is_file():
+        raise SystemExit(f"{checkout}: no src/coindie package (give a checkout, e.g. a git worktree)")
+    package = into / "coindie_base"
+    shutil.copytree(source, package, ignore=shutil.ignore_patterns("__pycache__"))
+    pattern = re.compile(r"\b(from|import) coindie\b")
+    for path in package.rglob("*.py"):
+        path.write_text(pattern.sub(r"\1 coindie_base", path.read_text()))
+    sys.path.insert(0, str(into))
+    importlib.invalidate_caches()
+    return importlib.import_module("coindie_base.registration")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("base", type=Path, help="a checkout of the commit to compare with")
+    parser.add_argument("hoard", type=Path)
+    parser.add_argument("--method", default="relief", help="a method, or a benchmark label")
+    parser.add_argument("--pairs", type=int, default=60)
+    args = parser.parse_args()
+    name, params = parse_method(args.method)
+    with tempfile.TemporaryDirectory() as folder:
+        base = import_base(args.base, Path(folder))
+        base_scan = importlib.import_module("coindie_base.scan").Scan
+        truth = load_truth(args.hoard)
+        pairs = plan_pairs(truth, max_pairs=args.pairs)
+        clouds = [
+            (_grid_scan(str(truth.faces[a].path)).transformed(T_turn), _grid_scan(str(truth.faces[b].path)))
+            for _, a, b, T_turn in track(pairs, description="reading")
+        ]
+        versions = {
+            "base": (base, [tuple(base_scan(points=s.points, normals=s.normals) for s in p) for p in clouds]),
+            "this": (coindie.registration, clouds),
+        }
+        seconds: dict[tuple[str, str], list[float]] = {(v, s): [] for v in versions for s in SITUATIONS}
+        stages: dict[tuple[str, str], dict[str, list[float]]] = {
+            (v, s): {} for v in versions for s in SITUATIONS
+        }
+        with threadpool_limits(limits=1):
+            for k in track(range(len(clouds)), description="pairs"):
+                order = ("base", "this") if k % 2 == 0 else ("this", "base")
+                for situation in SITUATIONS:
+                    for version in order:
+                        package, scans = versions[version]
+                        source, target = scans[k]
+                        method = package.get_method(name, **params)  # a fresh method: nothing cached
+                        clear_caches()
+                        spent, result = timed_in_situation(situation, method, source, target)
+                        seconds[version, situation].append(spent)
+                        for stage, value in result.timings.items():
+                            stages[version, situation].setdefault(stage, []).append(value)
+    print(f"\n{args.method}: seconds per pair over {len(clouds)} pairs, one core; base = {args.base}\n")
+    print("| situation | base | this | difference (median of pairs) | pairs faster |")
+    print("|---|---:|---:|---:|---:|")
+    for situation in SITUATIONS:
+        old, new = np.array(seconds["base", situation]), np.array(seconds["this", situation])
+        print(
+            f"| {situation} | {np.median(old):.4f} | {np.median(new):.4f} | {np.median(new - old):+.4f} "
+            f"| {np.mean(new < old):.0%} |"
+        )
+    names = [k for k in stages["this", SITUATIONS[0]] if k != "total"]
+    print("\nStage medians (s): base / this\n")
+    print("| situation | " + " | ".join(names) + " |")
+    print("|---|" + "---:|" * len(names))
+    for situation in SITUATIONS:
+        cells = []
+        for stage in names:
+            old_stage = np.median(stages["base", situation].get(stage, [np.nan]))
+            new_stage = np.median(stages["this", situation].get(stage, [np.nan]))
+            cells.append(f"{old_stage:.4f} / {new_stage:.4f}")
+        print(f"| {situation} | " + " | ".join(cells) + " |")
+
+
+if __name__ == "__main__":
+    main()
