@@ -86,3 +86,35 @@ def test_a_hoard_left_in_singletons_gets_its_second_pass() -> None:
     result = cluster_twice(calibrated_graph, "consensus")
     assert result.first_silhouette == 0.0 and result.second_pass
     assert second_pass.clusters_stand_out(result.graph, {face: 0 for face in truth}) == 0.0
+
+
+def _same_die_pairs_across(truth: dict[str, int], labels: dict[str, int]) -> float:
+    faces = list(truth)
+    pairs = [(a, b) for k, a in enumerate(faces) for b in faces[k + 1 :] if truth[a] == truth[b]]
+    return float(np.mean([labels[a] != labels[b] for a, b in pairs]))
+
+
+def test_the_pulls_are_fitted_across_clusters_that_keep_the_dies_together() -> None:
+    """The pairs the pulls are fitted on should be of other dies. On worn hoards the silhouette's cut
+    splits dies (same-die pairs across its clusters); the clusters the pulls are fitted across are the
+    first graph's at its cut of best modularity, which leave fewer of a die's pairs across."""
+    fewer = 0
+    for seed in range(8):
+        truth, calibrated_graph = _graphs(*_worn_hoard(seed))
+        seen: list[dict[str, int]] = []
+
+        def recording(across, graphs=calibrated_graph, seen=seen):  # noqa: ANN001, ANN202
+            if across is not None:
+                seen.append(dict(across))
+            return graphs(across)
+
+        assert cluster_twice(recording, "consensus").second_pass
+        first_graph = calibrated_graph(None)
+        params = {"measure": second_pass.FIRST_MEASURE}
+        cut = select_threshold_unsupervised(first_graph, "consensus", **params).threshold
+        by_silhouette = cluster(first_graph, "consensus", cut, **params).labels
+        split = _same_die_pairs_across(truth, by_silhouette)
+        fitted_across = _same_die_pairs_across(truth, seen[0])
+        assert fitted_across <= split
+        fewer += fitted_across < split - 0.05
+    assert fewer >= 2
