@@ -30,8 +30,7 @@ from coindie.bench.registration import _grid_scan, parse_method, plan_pairs
 from coindie.io.truth import load_truth
 from coindie.registration import get_method, rotation_error_deg, translation_error_mm
 from coindie.registration.clouds import Cloud
-from coindie.registration.relief import ReliefRegistration, _lift
-from coindie.registration.relief_search import align_reliefs
+from coindie.registration.relief import ReliefRegistration
 
 #: The ICP's basin: a planar pose within these of the truth converges (BENCHMARK.md, "Registration on
 #: the all-hard mix").
@@ -43,18 +42,9 @@ def planar_right(
 ) -> tuple[bool, float]:
     """Whether the planar pose of ``source`` onto ``target`` is within the basin, and its seconds."""
     prepared_source, prepared_target = estimator.prepare(source), estimator.prepare(target)
-    search = estimator.search
     start = time.perf_counter()
-    planar = align_reliefs(
-        prepared_source.image,
-        prepared_target.image,
-        n_angle_peaks=search.angle_peaks,
-        coarse_step=search.coarse_step,
-        search=search.angle_search,
-        angle_step_deg=search.angle_step,
-    )
+    _, T = estimator.planar_pose(prepared_source, prepared_target)
     seconds = time.perf_counter() - start
-    T = _lift(planar.matrix(), prepared_source.frame, prepared_target.frame)
     return rotation_error_deg(T_true, T) < RIGHT_DEG and translation_error_mm(T_true, T) < RIGHT_MM, seconds
 
 
@@ -65,6 +55,8 @@ def main() -> None:
     parser.add_argument("--pairs", type=int, default=50, help="same-die pairs per hoard")
     args = parser.parse_args()
     labels = [label.strip() for label in args.variants.split(",") if label.strip()]
+    if not labels:
+        raise SystemExit("--variants: give at least one relief label, e.g. relief")
     estimators = {}
     for label in labels:
         name, params = parse_method(label)

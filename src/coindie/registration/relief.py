@@ -32,7 +32,7 @@ from coindie.registration.base import Estimate, Timer
 from coindie.registration.clouds import Cloud
 from coindie.registration.icp import MIN_CORRESPONDENCES, IcpOutcome, point_to_plane_icp
 from coindie.registration.projective import ProjectedCloud
-from coindie.registration.relief_search import ReliefImage, align_reliefs, pose_score
+from coindie.registration.relief_search import PlanarAlignment, ReliefImage, align_reliefs, pose_score
 from coindie.scan import Scan
 from coindie.transforms import transform_points
 
@@ -215,15 +215,7 @@ class ReliefRegistration:
         with timer("relief images"):
             prepared_source, prepared_target = self.prepare(source), self.prepare(target)
         with timer("planar search"):
-            planar = align_reliefs(
-                prepared_source.image,
-                prepared_target.image,
-                n_angle_peaks=self.search.angle_peaks,
-                coarse_step=self.search.coarse_step,
-                search=self.search.angle_search,
-                angle_step_deg=self.search.angle_step,
-            )
-        T_init = _lift(planar.matrix(), prepared_source.frame, prepared_target.frame)
+            planar, T_init = self.planar_pose(prepared_source, prepared_target)
         with timer("icp"):
             relief_index = np.flatnonzero(prepared_source.relief)
             sample = self._icp_sample(relief_index, self.search.icp_points)
@@ -250,6 +242,18 @@ class ReliefRegistration:
             )
             return Estimate(T_init, n_points, outcome.n_correspondences, notes=notes)
         return Estimate(outcome.T_target_source, n_points, outcome.n_correspondences, notes=notes)
+
+    def planar_pose(self, source: PreparedFace, target: PreparedFace) -> tuple[PlanarAlignment, FloatArray]:
+        """Steps 4-5: the planar alignment of two prepared faces, and T_target_source lifted from it."""
+        planar = align_reliefs(
+            source.image,
+            target.image,
+            n_angle_peaks=self.search.angle_peaks,
+            coarse_step=self.search.coarse_step,
+            search=self.search.angle_search,
+            angle_step_deg=self.search.angle_step,
+        )
+        return planar, _lift(planar.matrix(), source.frame, target.frame)
 
     @staticmethod
     def _agreement(T_target_source: FloatArray, source: PreparedFace, target: PreparedFace) -> float:
