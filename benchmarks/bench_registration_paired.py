@@ -75,6 +75,7 @@ def main() -> None:
         stages: dict[tuple[str, str], dict[str, list[float]]] = {
             (v, s): {} for v in versions for s in SITUATIONS
         }
+        poses: dict[str, list[np.ndarray | None]] = {v: [] for v in versions}
         with threadpool_limits(limits=1):
             for k in track(range(len(clouds)), description="pairs"):
                 order = ("base", "this") if k % 2 == 0 else ("this", "base")
@@ -88,6 +89,8 @@ def main() -> None:
                         seconds[version, situation].append(spent)
                         for stage, value in result.timings.items():
                             stages[version, situation].setdefault(stage, []).append(value)
+                        if situation == SITUATIONS[-1]:
+                            poses[version].append(result.T_target_source)
     print(f"\n{args.method}: seconds per pair over {len(clouds)} pairs, one core; base = {args.base}\n")
     print("| situation | base | this | difference (median of pairs) | pairs faster |")
     print("|---|---:|---:|---:|---:|")
@@ -97,6 +100,7 @@ def main() -> None:
             f"| {situation} | {np.median(old):.4f} | {np.median(new):.4f} | {np.median(new - old):+.4f} "
             f"| {np.mean(new < old):.0%} |"
         )
+    print_pose_differences(poses["base"], poses["this"])
     names = [k for k in stages["this", SITUATIONS[0]] if k != "total"]
     print("\nStage medians (s): base / this\n")
     print("| situation | " + " | ".join(names) + " |")
@@ -108,6 +112,22 @@ def main() -> None:
             new_stage = np.median(stages["this", situation].get(stage, [np.nan]))
             cells.append(f"{old_stage:.4f} / {new_stage:.4f}")
         print(f"| {situation} | " + " | ".join(cells) + " |")
+
+
+def print_pose_differences(base: list[np.ndarray | None], this: list[np.ndarray | None]) -> None:
+    """How far the two versions' poses are apart (the last situation's): a change meant to be only faster
+    should leave them equal up to rounding."""
+    from coindie.registration import rotation_error_deg, translation_error_mm
+
+    both = [(a, b) for a, b in zip(base, this, strict=True) if a is not None and b is not None]
+    rotation = np.array([rotation_error_deg(a, b) for a, b in both])
+    translation = np.array([translation_error_mm(a, b) for a, b in both])
+    same = sum(float(np.abs(a - b).max()) < 1e-9 for a, b in both)
+    print(
+        f"\nPoses: {same} of {len(base)} pairs the same (matrices within 1e-9), {len(base) - len(both)} "
+        f"refused by either; largest difference {rotation.max(initial=0):.2e}° and "
+        f"{translation.max(initial=0):.2e} mm"
+    )
 
 
 if __name__ == "__main__":

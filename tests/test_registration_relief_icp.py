@@ -24,3 +24,29 @@ def test_the_last_stages_points_set_the_precision_on_a_noisy_scanner() -> None:
             )
     assert np.mean(errors[6000]) < 0.7 * np.mean(errors[2000])
     assert max(errors[6000]) < 0.1  # degrees: every pose right
+
+
+def test_the_last_stage_is_skipped_only_where_its_pose_would_be_refused() -> None:
+    """Coins of different reliefs: the ICP's first stages slide off the pattern, and the last stage is not
+    run; the pose that comes back is the one the full ICP gives (the planar pose, the ICP's refused).
+    Coins of one relief: every stage runs, and the pose is the full ICP's."""
+    from synthetic_pairs import random_relief, scan_relief
+
+    early = get_method("relief")
+    full = get_method("relief", **{"relief.icp_early_refusal": 2.0})
+    skipped = 0
+    for seed in range(6):
+        scanner = {"radius": 10.0, "spacing": 0.1, "noise": 0.01}
+        source = scan_relief(random_relief(seed), seed=seed, face_id="a", **scanner)
+        target = scan_relief(random_relief(seed + 100), seed=seed + 1, face_id="b", **scanner)
+        quick, whole = early.register(source, target), full.register(source, target)
+        if any("last stage not run" in note for note in quick.notes):
+            skipped += 1
+            assert any("ICP pose refused" in note for note in whole.notes)
+            np.testing.assert_allclose(quick.T_target_source, whole.T_target_source, atol=1e-9)
+    assert skipped >= 3
+    for seed in range(3):
+        pair = make_coin_pair(seed=seed, radius=8.0)
+        quick, whole = early.register(pair.source, pair.target), full.register(pair.source, pair.target)
+        assert not any("last stage not run" in note for note in quick.notes)
+        np.testing.assert_allclose(quick.T_target_source, whole.T_target_source, atol=1e-9)
