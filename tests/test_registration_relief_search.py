@@ -7,14 +7,18 @@ import pytest
 from scipy import ndimage
 
 from coindie.registration.relief_search import (
+    FixedSpectra,
     ReliefImage,
     _evidence_near_peak,
+    _masked_ncc_batch,
     _peak_shift,
     _significant_peaks,
     _turn_operator,
+    _window_shape,
     align_reliefs,
     correlate_turns,
     masked_ncc,
+    pose_score,
     rotate_image,
     rotation_candidates,
     significance,
@@ -231,3 +235,61 @@ def test_the_batched_peaks_are_the_single_image_peaks(seed: int) -> None:
         assert best[i] == evidence.max()
         shift = _peak_shift(evidence, ncc.shape[1:])  # (x, y) of the peak from the far corner
         assert np.allclose(peaks[i], np.asarray(ncc.shape[1:]) - 1.0 + shift[::-1], rtol=0, atol=1e-12)
+
+
+@pytest.mark.parametrize(("angle_deg", "origin"), [(0.0, 0), (33.0, 1), (250.0, -2)])
+def test_shorter_transforms_give_every_shift_where_the_footprints_can_overlap(
+    die_field: np.ndarray, angle_deg: float, origin: int
+) -> None:
+    """The correlations are taken with transforms shorter than the whole linear correlation
+    (:func:`_window_shape`): every shift they leave wrapped is one where the two footprints overlap on
+    fewer pixels than the floor (so it scores 0 either way), and every other shift is the full result."""
+    a = ReliefImage.from_grid(strike(die_field, rigid_2d(0.4, np.array([1.0, -0.5])), 1), PIXEL)
+    b = ReliefImage.from_grid(strike(die_field, rigid_2d(-0.3, np.array([-0.8, 0.6])), 2), PIXEL)
+    detail, mask, _ = a.cropped(2)
+    fixed, fixed_mask, _ = b.cropped(2)
+    min_pixels = 0.15 * min(fixed_mask.sum(), mask.sum())
+    centre = (np.asarray(detail.shape, dtype=np.float64) - 1.0) / 2.0
+    moving = rotate_image(detail, np.radians(angle_deg), centre=centre)[None]
+    moving_mask = rotate_image(mask.astype(np.float64), np.radians(angle_deg), centre=centre)[None] > 0.5
+    shape = _window_shape(fixed.shape, detail.shape, origin, min_pixels)
+    assert shape[0] < FixedSpectra.of(fixed, fixed_mask, detail.shape).shape[0]  # shorter, or no test
+
+    full_ncc, full_overlap = _masked_ncc_batch(
+        FixedSpectra.of(fixed, fixed_mask, detail.shape), moving, moving_mask, min_pixels
+    )
+    short = FixedSpectra.of(fixed, fixed_mask, detail.shape, shape)
+    ncc, _ = _masked_ncc_batch(short, moving, moving_mask, min_pixels)
+    rows, cols = ncc.shape[1:]
+    # the whole correlation's shifts the short one does not hold, or holds wrapped, overlap too little
+    wrapped = np.ones(full_ncc.shape[1:], dtype=bool)
+    wrapped[full_ncc.shape[1] - rows : rows, full_ncc.shape[2] - cols : cols] = False
+    assert full_overlap[0][wrapped].max() < min_pixels
+    assert (full_ncc[0][wrapped] == 0).all()
+    # and the rest is the same correlation (float32 transforms of two lengths)
+    kept = ~wrapped[:rows, :cols]
+    assert np.abs(ncc[0][kept] - full_ncc[0][:rows, :cols][kept]).max() < 1e-4
+    assert (ncc[0][~kept] == 0).all()
+
+
+def test_the_pose_score_on_the_footprints_windows_is_the_whole_images() -> None:
+    """:func:`pose_score` reads both images on squares cut to their footprints: the same correlation as
+    turning and shifting the whole source image and comparing it with the whole target, at any pose,
+    including one that moves the source half off the target."""
+    y, x = (np.mgrid[0:200, 0:200] - 99.5) * PIXEL
+    images = []
+    for seed, radius in ((1, 8.0), (2, 6.5)):
+        heights = ndimage.gaussian_filter(np.random.default_rng(seed).standard_normal((200, 200)), 3)
+        images.append(ReliefImage.from_grid(np.where(np.hypot(x - 0.7, y) < radius, heights, np.nan), PIXEL))
+    source, target = images
+    for angle, shift in [(0.0, (0.0, 0.0)), (0.7, (0.43, -1.21)), (-2.9, (9.0, 4.5)), (1.3, (-20.0, 0.0))]:
+        offset = (shift[1] / PIXEL, shift[0] / PIXEL)
+        moving = ndimage.shift(rotate_image(source.detail, angle), offset, order=1, mode="constant")
+        turned_mask = rotate_image(source.mask.astype(np.float64), angle)
+        both = (ndimage.shift(turned_mask, offset, order=1, mode="constant") > 0.5) & target.mask
+        if both.sum() < 3:
+            expected = -1.0
+        else:
+            f, m = target.detail[both], moving[both]
+            expected = float(np.corrcoef(f, m)[0, 1])
+        assert pose_score(source, target, angle, shift) == pytest.approx(expected, abs=1e-9)
