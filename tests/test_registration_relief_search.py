@@ -13,6 +13,7 @@ from coindie.registration.relief_search import (
     _masked_ncc_batch,
     _peak_shift,
     _significant_peaks,
+    _turn_images,
     _turn_operator,
     _window_shape,
     align_reliefs,
@@ -114,14 +115,16 @@ def test_masked_ncc_peak_gives_the_shift_and_ignores_outside_mask() -> None:
     assert overlap[k] == moving_mask.sum()
 
 
+@pytest.mark.parametrize("sweep_step", [None, 3])
 @pytest.mark.parametrize("seed", range(4))
 def test_exhaustive_search_recovers_off_centre_strikes_with_a_weak_half(
-    die_field: np.ndarray, seed: int
+    die_field: np.ndarray, seed: int, sweep_step: int | None
 ) -> None:
     """Flans struck a third of their radius off the die's centre in opposite directions (about 60 % of
     each face shared), one of them weakly struck on half its face: every turn is searched, so the
     rotation does not depend on the two footprints' spectra being alike. The peak over turns is wider
-    than for whole flans (less shared relief): within 1°, which the ICP refines."""
+    than for whole flans (less shared relief): within 1°, which the ICP refines. The same when the sweep
+    of every turn runs at a third of the resolution (relief's default) and its best turns at half."""
     rng = np.random.default_rng(300 + seed)
     direction = rng.uniform(-np.pi, np.pi)
     offset = 3.5 * np.array([np.cos(direction), np.sin(direction)])
@@ -133,7 +136,8 @@ def test_exhaustive_search_recovers_off_centre_strikes_with_a_weak_half(
     a = ReliefImage.from_grid(grid_a, PIXEL)
     b = ReliefImage.from_grid(strike(die_field, T_die_b, 60 + seed), PIXEL)
 
-    angle_error, shift_error = pose_errors(align_reliefs(a, b).matrix(), T_die_a, T_die_b)
+    found = align_reliefs(a, b, sweep_step=sweep_step)
+    angle_error, shift_error = pose_errors(found.matrix(), T_die_a, T_die_b)
     assert angle_error < 1.0
     assert shift_error < 0.2
 
@@ -161,8 +165,11 @@ def test_batched_cropped_correlation_equals_the_full_masked_ncc(die_field: np.nd
         assert np.abs(shift - (-d[::-1]) * PIXEL * step).max() < PIXEL * step
 
 
+@pytest.mark.parametrize("sweep_step", [None, 3])
 @pytest.mark.parametrize("seed", range(4))
-def test_strikes_far_off_centre_are_found_at_their_small_overlap(die_field: np.ndarray, seed: int) -> None:
+def test_strikes_far_off_centre_are_found_at_their_small_overlap(
+    die_field: np.ndarray, seed: int, sweep_step: int | None
+) -> None:
     """Two flans struck 5.5 mm off the die's centre in opposite directions: they share about a fifth of
     their faces. Ranked by NCC alone among overlaps of 30 % or more, the right pose was out of reach;
     ranked by significance, it is found."""
@@ -174,7 +181,7 @@ def test_strikes_far_off_centre_are_found_at_their_small_overlap(die_field: np.n
     a = ReliefImage.from_grid(strike(die_field, T_die_a, seed), PIXEL)
     b = ReliefImage.from_grid(strike(die_field, T_die_b, 70 + seed), PIXEL)
 
-    result = align_reliefs(a, b)
+    result = align_reliefs(a, b, sweep_step=sweep_step)
     angle_error, shift_error = pose_errors(result.matrix(), T_die_a, T_die_b)
     assert angle_error < 1.0
     assert shift_error < 0.2
@@ -201,8 +208,9 @@ def test_the_peak_is_found_when_the_overlap_share_exceeds_one() -> None:
 
 
 def test_the_turn_operator_is_rotate_image() -> None:
-    """The sweep's sparse operator turns an image and its mask as :func:`rotate_image` does, at every
-    angle, about an off-centre point, up to the edges (zero where the sample falls outside)."""
+    """The sweep's sparse operator, and the refinements' direct gathering of its samples, turn an image
+    and its mask as :func:`rotate_image` does, at every angle, about an off-centre point, up to the edges
+    (zero where the sample falls outside)."""
     rng = np.random.default_rng(5)
     image = ndimage.gaussian_filter(rng.standard_normal((31, 31)), 1.5)
     mask = ndimage.binary_erosion(np.ones((31, 31), dtype=bool), iterations=3) & (image > -0.3)
@@ -215,6 +223,10 @@ def test_the_turn_operator_is_rotate_image() -> None:
         assert np.abs(turned[i, ..., 0] - expected).max() < 1e-12
         expected_mask = rotate_image(mask.astype(np.float64), angle, centre=np.asarray(centre)) > 0.5
         assert np.array_equal(turned[i, ..., 1] > 0.5, expected_mask)
+    # the refinements' turns, gathered without an operator: the same images
+    direct, direct_mask = _turn_images(image, mask, centre, np.asarray(angles))
+    assert np.abs(direct - turned[..., 0]).max() < 1e-12
+    assert np.array_equal(direct_mask, turned[..., 1] > 0.5)
 
 
 @pytest.mark.parametrize("seed", range(3))

@@ -195,6 +195,35 @@ def _turn_operator(
     took 15 ms, the sparse product of all of them 1.5 ms (building the operator: 12 ms). Built once per
     image size and kept, eight sizes at most (a hoard's crops come in a handful of sizes), 6-9 MB each
     at the default settings."""
+    inside, corners, weights = _turn_samples(shape, centre, angles)
+    # CSR written directly (four entries a row inside the image, none outside), 32-bit indices
+    starts = np.concatenate([[0], np.cumsum(4 * inside.ravel(), dtype=np.int64)]).astype(np.int32)
+    height, width = shape[0], shape[1]
+    return sparse.csr_array(
+        (weights.ravel(), corners.ravel().astype(np.int32), starts),
+        shape=(len(angles) * height * width, height * width),
+    )
+
+
+def _turn_images(
+    detail: FloatImage, mask: BoolImage, centre: tuple[float, float], angles: NDArray[np.float64]
+) -> tuple[FloatImage, BoolImage]:
+    """The detail and its mask turned by each of ``angles`` as :func:`rotate_image` turns them, for
+    turns that are not used again (the search's refinements): the operator's samples gathered directly
+    (a fifth of the time of two interpolation calls per angle)."""
+    inside, corners, weights = _turn_samples(detail.shape, centre, tuple(map(float, angles)))
+    both = np.stack([detail.ravel(), mask.ravel().astype(np.float64)], axis=1)
+    turned = np.zeros((inside.size, 2))
+    turned[inside.ravel()] = np.einsum("pk,pkc->pc", weights, both[corners])
+    turned = turned.reshape(len(angles), *detail.shape, 2)
+    return turned[..., 0], turned[..., 1] > 0.5
+
+
+def _turn_samples(
+    shape: tuple[int, ...], centre: tuple[float, float], angles: tuple[float, ...]
+) -> tuple[BoolImage, NDArray[np.intp], FloatImage]:
+    """Where each pixel of each turned image samples the image (:func:`rotate_image`'s bilinear turn):
+    whether it falls inside, and for those that do, the four flattened corners and their weights."""
     height, width = shape[0], shape[1]
     rows, cols = np.mgrid[0:height, 0:width].astype(np.float64)
     dy, dx = (rows - centre[0]).ravel(), (cols - centre[1]).ravel()
@@ -208,12 +237,7 @@ def _turn_operator(
     r1, c1 = np.minimum(r0 + 1, height - 1), np.minimum(c0 + 1, width - 1)
     corners = np.stack([r0 * width + c0, r0 * width + c1, r1 * width + c0, r1 * width + c1], axis=1)
     weights = np.stack([(1 - fy) * (1 - fx), (1 - fy) * fx, fy * (1 - fx), fy * fx], axis=1)
-    # CSR written directly (four entries a row inside the image, none outside), 32-bit indices
-    starts = np.concatenate([[0], np.cumsum(4 * inside.ravel(), dtype=np.int64)]).astype(np.int32)
-    return sparse.csr_array(
-        (weights.ravel(), corners.ravel().astype(np.int32), starts),
-        shape=(len(angles) * height * width, height * width),
-    )
+    return inside, corners, weights
 
 
 def _parabolic_offset(values: NDArray[np.float64], index: int) -> float:
@@ -315,6 +339,7 @@ def align_reliefs(
     min_overlap: float = 0.15,
     search: str = "exhaustive",
     angle_step_deg: float = 8.0,
+    sweep_step: int | None = None,
 ) -> PlanarAlignment:
     """Rotation + translation taking the source relief onto the target (see the module docstring).
 
@@ -322,15 +347,17 @@ def align_reliefs(
     footprints overlap on at least ``min_overlap`` of the smaller one; the returned ``score`` is the NCC of
     the chosen pose.
 
-    ``search="exhaustive"``: every turn by ``angle_step_deg`` is scored at 1/``coarse_step`` resolution,
-    and the ``n_angle_peaks`` best are scored again a third of a step to either side. ``"spectrum"``: the
+    ``search="exhaustive"``: every turn by ``angle_step_deg`` is scored at 1/``sweep_step`` resolution
+    (default: ``coarse_step``), and the ``n_angle_peaks`` best, and a third of a step to either side of
+    each, at 1/``coarse_step``. ``"spectrum"``: the
     ``n_angle_peaks`` peaks of the spectra's correlation, each with its 180° twin, are scored. The best
     angle is then correlated at full resolution for its translation and final score.
     """
     if source.detail.shape != target.detail.shape or source.pixel_mm != target.pixel_mm:
         raise ValueError("relief images must share their grid (shape and pixel size)")
     if search == "exhaustive":
-        tried = _search_turns(source, target, angle_step_deg, n_angle_peaks, coarse_step, min_overlap)
+        sweep = coarse_step if sweep_step is None else sweep_step
+        tried = _search_turns(source, target, angle_step_deg, n_angle_peaks, coarse_step, min_overlap, sweep)
     elif search == "spectrum":
         angles = rotation_candidates(source.polar, target.polar, n_peaks=n_angle_peaks)
         candidates = [a + half for a in angles for half in (0.0, np.pi)]
@@ -382,22 +409,39 @@ def _correlate(
 
 
 def _search_turns(
-    source: ReliefImage, target: ReliefImage, step_deg: float, n_best: int, step: int, min_overlap: float
+    source: ReliefImage,
+    target: ReliefImage,
+    step_deg: float,
+    n_best: int,
+    step: int,
+    min_overlap: float,
+    sweep_step: int,
 ) -> list[tuple[float, float, tuple[float, float]]]:
-    """(angle, score, shift) of the turns tried by the exhaustive search: every ``step_deg``, then the
-    ``n_best`` best a third of a step to either side, all at 1/``step`` resolution. (A coarser sweep misses
-    more: of 450 same-die pairs of nine all-hard hoards, every correlation at 1/3 put 66 % in the ICP's
-    reach, the sweep alone at 1/3 (a patch, not kept) 77 %, against 78 %.)"""
+    """(angle, score, shift) of the turns tried by the exhaustive search: every ``step_deg`` at
+    1/``sweep_step`` resolution, then the ``n_best`` best, and a third of a step to either side of each,
+    at 1/``step`` (the turns of a coarser sweep are scored again: significances at two resolutions do
+    not compare).
+
+    The sweep is most of the search's cost; the choice among its best turns is where resolution tells.
+    Of 550 same-die pairs of eleven hoards (four all-hard, six single-axis extremes, riedones), a sweep at
+    1/3 and its best turns at 1/2 put 491 in the ICP's reach, against 492 with everything at 1/2
+    (bench_planar_search.py), for a third less time; but the die study of the all-hard hoards moved with
+    the 77 of 1,560 poses that changed (seed 4500: FMI 0.946 -> 0.900, a die merged; 6500: 0.909 ->
+    0.895), so relief keeps the sweep at 1/2 (BENCHMARK.md)."""
     n_turns = max(int(round(360.0 / step_deg)), 1)
     turns = np.arange(n_turns) * (2.0 * np.pi / n_turns)
-    scores, shifts = correlate_turns(source, target, turns, step, min_overlap, reuse_turns=True)
+    scores, shifts = correlate_turns(source, target, turns, sweep_step, min_overlap, reuse_turns=True)
     best = np.argsort(scores)[::-1][:n_best]
     third = np.pi / n_turns / 1.5
     nearby = np.concatenate([turns[best] - third, turns[best] + third])
-    near_scores, near_shifts = correlate_turns(source, target, nearby, step, min_overlap)
-    angles = np.concatenate([turns[best], nearby])
-    all_scores = np.concatenate([scores[best], near_scores])
-    all_shifts = np.concatenate([shifts[best], near_shifts])
+    if sweep_step == step:
+        near_scores, near_shifts = correlate_turns(source, target, nearby, step, min_overlap)
+        angles = np.concatenate([turns[best], nearby])
+        all_scores = np.concatenate([scores[best], near_scores])
+        all_shifts = np.concatenate([shifts[best], near_shifts])
+    else:
+        angles = np.concatenate([turns[best], nearby])
+        all_scores, all_shifts = correlate_turns(source, target, angles, step, min_overlap)
     tried = [
         (float(a), float(s), (float(d[0]), float(d[1])))
         for a, s, d in zip(angles, all_scores, all_shifts, strict=True)
@@ -457,9 +501,7 @@ def correlate_turns(
         if reuse_turns:
             moving, moving_mask = all_moving[first : first + batch], all_masks[first : first + batch]
         else:
-            moving = np.stack([rotate_image(detail, a, centre=centre) for a in chunk])
-            turned_masks = [rotate_image(mask.astype(np.float64), a, centre=centre) for a in chunk]
-            moving_mask = np.stack(turned_masks) > 0.5
+            moving, moving_mask = _turn_images(detail, mask, (float(centre[0]), float(centre[1])), chunk)
         ncc, overlap = _masked_ncc_batch(fixed, moving, moving_mask, min_pixels)
         best, peaks = _significant_peaks(ncc, overlap, full)
         scores[first : first + len(chunk)] = best
