@@ -13,7 +13,6 @@ from coindie.registration.relief_search import (
     _masked_ncc_batch,
     _peak_shift,
     _significant_peaks,
-    _turn_images,
     _turn_operator,
     _window_shape,
     align_reliefs,
@@ -208,9 +207,8 @@ def test_the_peak_is_found_when_the_overlap_share_exceeds_one() -> None:
 
 
 def test_the_turn_operator_is_rotate_image() -> None:
-    """The sweep's sparse operator, and the refinements' direct gathering of its samples, turn an image
-    and its mask as :func:`rotate_image` does, at every angle, about an off-centre point, up to the edges
-    (zero where the sample falls outside)."""
+    """The sweep's sparse operator turns an image and its mask as :func:`rotate_image` does, at every
+    angle, about an off-centre point, up to the edges (zero where the sample falls outside)."""
     rng = np.random.default_rng(5)
     image = ndimage.gaussian_filter(rng.standard_normal((31, 31)), 1.5)
     mask = ndimage.binary_erosion(np.ones((31, 31), dtype=bool), iterations=3) & (image > -0.3)
@@ -223,10 +221,6 @@ def test_the_turn_operator_is_rotate_image() -> None:
         assert np.abs(turned[i, ..., 0] - expected).max() < 1e-12
         expected_mask = rotate_image(mask.astype(np.float64), angle, centre=np.asarray(centre)) > 0.5
         assert np.array_equal(turned[i, ..., 1] > 0.5, expected_mask)
-    # the refinements' turns, gathered without an operator: the same images
-    direct, direct_mask = _turn_images(image, mask, centre, np.asarray(angles))
-    assert np.abs(direct - turned[..., 0]).max() < 1e-12
-    assert np.array_equal(direct_mask, turned[..., 1] > 0.5)
 
 
 @pytest.mark.parametrize("seed", range(3))

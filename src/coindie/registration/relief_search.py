@@ -195,35 +195,6 @@ def _turn_operator(
     took 15 ms, the sparse product of all of them 1.5 ms (building the operator: 12 ms). Built once per
     image size and kept, eight sizes at most (a hoard's crops come in a handful of sizes), 6-9 MB each
     at the default settings."""
-    inside, corners, weights = _turn_samples(shape, centre, angles)
-    # CSR written directly (four entries a row inside the image, none outside), 32-bit indices
-    starts = np.concatenate([[0], np.cumsum(4 * inside.ravel(), dtype=np.int64)]).astype(np.int32)
-    height, width = shape[0], shape[1]
-    return sparse.csr_array(
-        (weights.ravel(), corners.ravel().astype(np.int32), starts),
-        shape=(len(angles) * height * width, height * width),
-    )
-
-
-def _turn_images(
-    detail: FloatImage, mask: BoolImage, centre: tuple[float, float], angles: NDArray[np.float64]
-) -> tuple[FloatImage, BoolImage]:
-    """The detail and its mask turned by each of ``angles`` as :func:`rotate_image` turns them, for
-    turns that are not used again (the search's refinements): the operator's samples gathered directly
-    (a fifth of the time of two interpolation calls per angle)."""
-    inside, corners, weights = _turn_samples(detail.shape, centre, tuple(map(float, angles)))
-    both = np.stack([detail.ravel(), mask.ravel().astype(np.float64)], axis=1)
-    turned = np.zeros((inside.size, 2))
-    turned[inside.ravel()] = np.einsum("pk,pkc->pc", weights, both[corners])
-    turned = turned.reshape(len(angles), *detail.shape, 2)
-    return turned[..., 0], turned[..., 1] > 0.5
-
-
-def _turn_samples(
-    shape: tuple[int, ...], centre: tuple[float, float], angles: tuple[float, ...]
-) -> tuple[BoolImage, NDArray[np.intp], FloatImage]:
-    """Where each pixel of each turned image samples the image (:func:`rotate_image`'s bilinear turn):
-    whether it falls inside, and for those that do, the four flattened corners and their weights."""
     height, width = shape[0], shape[1]
     rows, cols = np.mgrid[0:height, 0:width].astype(np.float64)
     dy, dx = (rows - centre[0]).ravel(), (cols - centre[1]).ravel()
@@ -237,7 +208,12 @@ def _turn_samples(
     r1, c1 = np.minimum(r0 + 1, height - 1), np.minimum(c0 + 1, width - 1)
     corners = np.stack([r0 * width + c0, r0 * width + c1, r1 * width + c0, r1 * width + c1], axis=1)
     weights = np.stack([(1 - fy) * (1 - fx), (1 - fy) * fx, fy * (1 - fx), fy * fx], axis=1)
-    return inside, corners, weights
+    # CSR written directly (four entries a row inside the image, none outside), 32-bit indices
+    starts = np.concatenate([[0], np.cumsum(4 * inside.ravel(), dtype=np.int64)]).astype(np.int32)
+    return sparse.csr_array(
+        (weights.ravel(), corners.ravel().astype(np.int32), starts),
+        shape=(len(angles) * height * width, height * width),
+    )
 
 
 def _parabolic_offset(values: NDArray[np.float64], index: int) -> float:
@@ -349,9 +325,9 @@ def align_reliefs(
 
     ``search="exhaustive"``: every turn by ``angle_step_deg`` is scored at 1/``sweep_step`` resolution
     (default: ``coarse_step``), and the ``n_angle_peaks`` best, and a third of a step to either side of
-    each, at 1/``coarse_step``. ``"spectrum"``: the
-    ``n_angle_peaks`` peaks of the spectra's correlation, each with its 180° twin, are scored. The best
-    angle is then correlated at full resolution for its translation and final score.
+    each, at 1/``coarse_step``. ``"spectrum"``: the ``n_angle_peaks`` peaks of the spectra's
+    correlation, each with its 180° twin, are scored. The best angle is then correlated at full
+    resolution for its translation and final score.
     """
     if source.detail.shape != target.detail.shape or source.pixel_mm != target.pixel_mm:
         raise ValueError("relief images must share their grid (shape and pixel size)")
@@ -501,7 +477,9 @@ def correlate_turns(
         if reuse_turns:
             moving, moving_mask = all_moving[first : first + batch], all_masks[first : first + batch]
         else:
-            moving, moving_mask = _turn_images(detail, mask, (float(centre[0]), float(centre[1])), chunk)
+            moving = np.stack([rotate_image(detail, a, centre=centre) for a in chunk])
+            turned_masks = [rotate_image(mask.astype(np.float64), a, centre=centre) for a in chunk]
+            moving_mask = np.stack(turned_masks) > 0.5
         ncc, overlap = _masked_ncc_batch(fixed, moving, moving_mask, min_pixels)
         best, peaks = _significant_peaks(ncc, overlap, full)
         scores[first : first + len(chunk)] = best
