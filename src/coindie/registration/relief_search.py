@@ -281,7 +281,7 @@ class ReliefImage:
         footprint at every turn with two pixels to spare, and the index where it starts (rows and columns
         alike). Outside it the detail and the mask are zero at any turn, before and after a bilinear turn
         or shift, so masked correlations on it equal those on the whole image (whose corners are empty
-        field) at a third of the cost. Cached."""
+        field) at about half the cost (the pose check: 5.6 -> 3.2 ms a pair). Cached."""
         if not self._window:
             _, _, start = self.cropped(1)
             start = max(start - 2, 0)
