@@ -123,7 +123,7 @@ def test_exhaustive_search_recovers_off_centre_strikes_with_a_weak_half(
     each face shared), one of them weakly struck on half its face: every turn is searched, so the
     rotation does not depend on the two footprints' spectra being alike. The peak over turns is wider
     than for whole flans (less shared relief): within 1°, which the ICP refines. The same when the sweep
-    of every turn runs at a third of the resolution (relief's default) and its best turns at half."""
+    of every turn runs at a third of the resolution (``relief.sweep_step=3``) and its best turns at half."""
     rng = np.random.default_rng(300 + seed)
     direction = rng.uniform(-np.pi, np.pi)
     offset = 3.5 * np.array([np.cos(direction), np.sin(direction)])

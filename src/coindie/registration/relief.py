@@ -245,15 +245,17 @@ class ReliefRegistration:
             planar, T_init = self.planar_pose(prepared_source, prepared_target)
         with timer("pose check"):
             start = self._agreement(T_init, prepared_source, prepared_target)
-        agreement: dict[str, float] = {}
+        refined, first_agreement = True, start  # set by the early check where the ICP asks it
 
         def worth_refining(T_first: FloatArray) -> bool:
             # The pose check, asked early: on worn, bent or crusted pairs (and most pairs of different
             # dies) the first stages already slide off the die pattern, and the last stage, most of the
             # ICP's time, would not bring them back (see ReliefSearch.icp_early_refusal).
+            nonlocal refined, first_agreement
             with timer("pose check"):
-                agreement["first"] = self._agreement(T_first, prepared_source, prepared_target)
-            return agreement["first"] >= start - self.search.icp_early_refusal
+                first_agreement = self._agreement(T_first, prepared_source, prepared_target)
+            refined = first_agreement >= start - self.search.icp_early_refusal
+            return refined
 
         with timer("icp"):
             relief_index = np.flatnonzero(prepared_source.relief)
@@ -264,7 +266,6 @@ class ReliefRegistration:
                 source.points[sample], target, T_init, early, source.points[final], worth_refining
             )
             n_points = max(len(sample), len(final))  # the source points a stage paired at most
-        refined = "first" not in agreement or agreement["first"] >= start - self.search.icp_early_refusal
         notes = (
             f"relief correlation {planar.score:.3f} at {np.degrees(planar.angle_rad):.2f}°",
             f"ICP: {outcome.iterations} iterations, converged={outcome.converged}"
@@ -275,7 +276,7 @@ class ReliefRegistration:
             return Estimate(T_init, outcome.n_correspondences, failure=failure, notes=notes)
         with timer("pose check"):
             kept = (
-                agreement["first"]
+                first_agreement
                 if not refined
                 else self._agreement(outcome.T_target_source, prepared_source, prepared_target)
             )

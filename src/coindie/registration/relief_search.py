@@ -35,7 +35,7 @@ x = x0 + j * pixel, y = y0 + i * pixel.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from functools import lru_cache
+from functools import cached_property, lru_cache
 
 import numpy as np
 from numpy.typing import NDArray
@@ -236,9 +236,10 @@ class ReliefImage:
     mask: BoolImage
     pixel_mm: float
     polar: FloatImage
-    _spectra: dict[tuple[int, tuple[int, ...]], FixedSpectra] = field(default_factory=dict, repr=False)
+    _spectra: dict[tuple[int, tuple[int, ...], tuple[int, int]], FixedSpectra] = field(
+        default_factory=dict, repr=False
+    )
     _cropped: dict[int, tuple[FloatImage, BoolImage, int]] = field(default_factory=dict, repr=False)
-    _window: list[tuple[FloatImage, BoolImage, int]] = field(default_factory=list, repr=False)
 
     @classmethod
     def from_grid(
@@ -276,20 +277,25 @@ class ReliefImage:
             self._cropped[step] = self._crop(step)
         return self._cropped[step]
 
+    @cached_property
     def window(self) -> tuple[FloatImage, BoolImage, int]:
         """Detail and mask at full resolution cut to a square about the image's centre that holds the
         footprint at every turn with two pixels to spare, and the index where it starts (rows and columns
         alike). Outside it the detail and the mask are zero at any turn, before and after a bilinear turn
         or shift, so masked correlations on it equal those on the whole image (whose corners are empty
-        field) at about half the cost (the pose check: 5.6 -> 3.2 ms a pair). Cached."""
-        if not self._window:
-            _, _, start = self.cropped(1)
-            start = max(start - 2, 0)
-            stop = self.detail.shape[0] - start
-            self._window.append(
-                (self.detail[start:stop, start:stop], self.mask[start:stop, start:stop], start)
-            )
-        return self._window[0]
+        field) at about half the cost (the pose check: 5.6 -> 3.2 ms a pair)."""
+        _, _, start = self.cropped(1)
+        start = max(start - 2, 0)
+        stop = self.detail.shape[0] - start
+        return self.detail[start:stop, start:stop], self.mask[start:stop, start:stop], start
+
+    def turned_window(self, angle_rad: float) -> tuple[FloatImage, FloatImage, int]:
+        """The :attr:`window`'s detail and mask (as weights in [0, 1]) turned by ``angle_rad`` about the
+        image's centre, as :func:`rotate_image` turns the whole image, and the window's start."""
+        detail, mask, start = self.window
+        centre = (np.asarray(self.detail.shape, dtype=np.float64) - 1.0) / 2.0 - start
+        turned = rotate_image(detail, angle_rad, centre=centre)
+        return turned, rotate_image(mask.astype(np.float64), angle_rad, centre=centre), start
 
     def _crop(self, step: int) -> tuple[FloatImage, BoolImage, int]:
         detail, mask = self.reduced(step)
@@ -357,14 +363,12 @@ def pose_score(
     both footprints: the score :func:`align_reliefs` maximises, at any pose (sub-pixel shifts by linear
     interpolation). -1 without overlap. A dimensionless judge of a refined pose."""
     offset = np.array([shift_mm[1], shift_mm[0]]) / source.pixel_mm  # (rows, cols)
-    detail, mask, source_start = source.window()
-    fixed, fixed_mask, target_start = target.window()
-    centre = (np.asarray(source.detail.shape, dtype=np.float64) - 1.0) / 2.0 - source_start
+    turned, turned_mask, source_start = source.turned_window(angle_rad)
+    fixed, fixed_mask, target_start = target.window
     # the turned source, moved by the offset, read on the target's window: (rows, cols) q of the window
     # sample the turned window at q - offset + (target_start - source_start)
     behind = np.full(2, float(source_start - target_start)) + offset
-    moving = _moved(rotate_image(detail, angle_rad, centre=centre), behind, fixed.shape)
-    turned_mask = rotate_image(mask.astype(np.float64), angle_rad, centre=centre)
+    moving = _moved(turned, behind, fixed.shape)
     moving_mask = _moved(turned_mask, behind, fixed.shape) > 0.5
     both = moving_mask & fixed_mask
     if int(both.sum()) < 3:
@@ -410,13 +414,12 @@ def _search_turns(
     best = np.argsort(scores)[::-1][:n_best]
     third = np.pi / n_turns / 1.5
     nearby = np.concatenate([turns[best] - third, turns[best] + third])
-    if sweep_step == step:
+    angles = np.concatenate([turns[best], nearby])
+    if sweep_step == step:  # the best turns' scores at this resolution are the sweep's
         near_scores, near_shifts = correlate_turns(source, target, nearby, step, min_overlap)
-        angles = np.concatenate([turns[best], nearby])
         all_scores = np.concatenate([scores[best], near_scores])
         all_shifts = np.concatenate([shifts[best], near_shifts])
     else:
-        angles = np.concatenate([turns[best], nearby])
         all_scores, all_shifts = correlate_turns(source, target, angles, step, min_overlap)
     tried = [
         (float(a), float(s), (float(d[0]), float(d[1])))
@@ -674,11 +677,9 @@ def _refine_shift(
 ) -> tuple[float, tuple[float, float]]:
     """Masked NCC at full resolution for the integer shifts within ``radius_px`` of ``shift_mm`` (the
     coarse estimate), and the sub-pixel peak: a few direct sums instead of full-size FFTs."""
-    detail, mask, source_start = source.window()
-    fixed, fixed_mask, target_start = target.window()
-    turn_centre = (np.asarray(source.detail.shape, dtype=np.float64) - 1.0) / 2.0 - source_start
-    moving = rotate_image(detail, angle, centre=turn_centre)
-    moving_mask = rotate_image(mask.astype(np.float64), angle, centre=turn_centre) > 0.5
+    moving, turned_mask, source_start = source.turned_window(angle)
+    moving_mask = turned_mask > 0.5
+    fixed, fixed_mask, target_start = target.window
     centre = np.rint(np.asarray(shift_mm) / source.pixel_mm).astype(int)  # (x, y) pixels
     behind = source_start - target_start  # the windows' shifts are the whole images' less this
     offsets = range(-radius_px, radius_px + 1)
