@@ -188,7 +188,7 @@ def test_a_bad_scan_is_recorded_and_new_scans_only_add_their_pairs(
     assert_same_pairs(_results(tmp_path / "project"), reference)
 
 
-def test_tiles_cover_every_pair_once_and_bound_the_faces_per_batch() -> None:
+def test_tiles_cover_every_pair_once_bound_the_faces_per_batch_and_run_each_source_in_one_go() -> None:
     faces = [f"L{i:04d}D" for i in range(40)]
     rng = np.random.default_rng(1)
     pairs = sorted({tuple(sorted(rng.choice(faces, 2, replace=False))) for _ in range(300)})
@@ -196,6 +196,10 @@ def test_tiles_cover_every_pair_once_and_bound_the_faces_per_batch() -> None:
     flat = [pair for batch in batches for pair in batch]
     assert sorted(flat) == pairs
     assert all(len({f for pair in batch for f in pair}) <= 8 for batch in batches)
+    # a source's pairs run one after another (the relief search keeps the last few sources' turns)
+    for batch in batches:
+        sources = [source for source, _ in batch]
+        assert len([s for k, s in enumerate(sources) if k == 0 or s != sources[k - 1]]) == len(set(sources))
 
 
 def test_a_worker_does_not_take_one_projects_face_for_anothers(tmp_path: Path) -> None:

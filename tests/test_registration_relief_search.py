@@ -7,6 +7,7 @@ import pytest
 from scipy import ndimage
 
 from coindie.registration.relief_search import (
+    _SWEPT,
     FixedSpectra,
     ReliefImage,
     _evidence_near_peak,
@@ -299,3 +300,37 @@ def test_the_pose_score_on_the_footprints_windows_is_the_whole_images() -> None:
             f, m = target.detail[both], moving[both]
             expected = float(np.corrcoef(f, m)[0, 1])
         assert pose_score(source, target, angle, shift) == pytest.approx(expected, abs=1e-9)
+
+
+def test_the_kept_turns_of_a_source_give_each_target_its_own_correlations(die_field: np.ndarray) -> None:
+    """The sweep keeps each source's turned transforms (one entry per source and transform size) and
+    reuses them for every target: each source against each target, in a study's order (a source's pairs
+    one after another), then in the reverse order, gives exactly what it gives computed afresh; two sources
+    of one size never share an entry."""
+    angles = np.arange(45) * (2.0 * np.pi / 45)
+    radii = {1: 0.0, 2: 0.0, 3: 2.0, 4: 3.5}  # flans of several sizes: transforms of several sizes
+    images = {
+        seed: ReliefImage.from_grid(
+            np.where(
+                np.hypot(*((np.mgrid[0:256, 0:256] - 127.5) * PIXEL)) < 12.0 - extra,
+                strike(die_field, rigid_2d(0.3 * seed, np.array([0.2 * seed, -0.1])), seed),
+                np.nan,
+            ),
+            PIXEL,
+        )
+        for seed, extra in radii.items()
+    }
+    pairs = [(s, t) for s in images for t in images if s != t]
+
+    def fresh(source: int, target: int) -> tuple[np.ndarray, np.ndarray]:
+        _SWEPT.clear()
+        return correlate_turns(images[source], images[target], angles, 2, 0.15, reuse_turns=True)
+
+    expected = {pair: fresh(*pair) for pair in pairs}
+    assert len({expected[pair][0].tobytes() for pair in pairs}) == len(pairs)  # all different
+    _SWEPT.clear()
+    for pair in pairs + pairs[::-1]:
+        scores, shifts = correlate_turns(images[pair[0]], images[pair[1]], angles, 2, 0.15, reuse_turns=True)
+        assert np.array_equal(scores, expected[pair][0]) and np.array_equal(shifts, expected[pair][1])
+    sizes = {images[s].cropped(2)[0].shape for s in images}
+    assert len(sizes) > 1  # or no two transform sizes were tried

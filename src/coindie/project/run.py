@@ -434,7 +434,9 @@ def tile_batches(pairs: list[tuple[str, str]], batch_faces: int) -> list[list[tu
     """Cut pairs into batches touching at most ``2 * batch_faces`` faces each, so a worker loads each
     face once per batch: faces are ordered by reverse Cuthill–McKee on the pair graph (linked faces get
     close positions), pairs grouped by tile of that order, small tiles merged. Within a batch pairs are
-    sorted by target, then source."""
+    sorted by source, then target: a source's turned relief transforms are the costliest per-face work
+    a registration can reuse (``relief_search._SWEPT``), and they are kept for the last few sources only;
+    every face of a batch stays in the worker's face cache whatever the order."""
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import reverse_cuthill_mckee
 
@@ -464,7 +466,7 @@ def tile_batches(pairs: list[tuple[str, str]], batch_faces: int) -> list[list[tu
         current_faces |= tile_faces
     if current:
         batches.append(current)
-    return [sorted(batch, key=lambda pair: (pair[1], pair[0])) for batch in batches]
+    return [sorted(batch) for batch in batches]
 
 
 def _commit(project: Project, params_hash: str, run_id: int, rows: list[dict[str, Any]]) -> None:

@@ -41,6 +41,8 @@ import numpy as np
 from numpy.typing import NDArray
 from scipy import fft, ndimage, sparse
 
+from coindie.caches import LRUCache
+
 FloatImage = NDArray[np.float64]
 BoolImage = NDArray[np.bool_]
 
@@ -143,6 +145,28 @@ class FixedSpectra:
             fft.rfft2(f, shape),
             fft.rfft2(fm, shape),
             fft.rfft2(f * f, shape),
+        )
+
+
+@dataclass(frozen=True, eq=False)
+class MovingSpectra:
+    """The Fourier transforms of a stack of moving images (axis 0) that masked NCC needs: the other half
+    of a correlation's transforms. A source's turns at the sweep's angles are the same against every
+    target of a study, so they are kept (:func:`_swept_spectra`) and reused."""
+
+    shape: tuple[int, int]
+    moving_shape: tuple[int, int]
+    F_m: NDArray[np.complex128]
+    F_mm: NDArray[np.complex128]
+    F_mm_m: NDArray[np.complex128]  # of the squared image
+
+    @classmethod
+    def of(cls, moving: FloatImage, moving_mask: BoolImage, shape: tuple[int, int]) -> MovingSpectra:
+        mm = moving_mask[:, ::-1, ::-1].astype(np.float32)
+        m = moving[:, ::-1, ::-1].astype(np.float32) * mm
+        forward = fft.rfft2(m, shape, axes=(-2, -1)), fft.rfft2(mm, shape, axes=(-2, -1))
+        return cls(
+            shape, (moving.shape[1], moving.shape[2]), *forward, fft.rfft2(m * m, shape, axes=(-2, -1))
         )
 
 
@@ -469,27 +493,55 @@ def correlate_turns(
     scores = np.empty(len(angles))
     shifts = np.empty((len(angles), 2))
     if reuse_turns:
-        operator = _turn_operator(
-            detail.shape, (float(centre[0]), float(centre[1])), tuple(map(float, angles))
-        )
-        both = operator @ np.stack([detail.ravel(), mask.ravel().astype(np.float64)], axis=1)
-        turned = both.reshape(len(angles), *detail.shape, 2)
-        all_moving, all_masks = turned[..., 0], turned[..., 1] > 0.5
+        spectra = _swept_spectra(source, step, tuple(map(float, angles)), shape, batch)
     for first in range(0, len(angles), batch):
         chunk = angles[first : first + batch]
         if reuse_turns:
-            moving, moving_mask = all_moving[first : first + batch], all_masks[first : first + batch]
+            moving = spectra[first // batch]
         else:
-            moving = np.stack([rotate_image(detail, a, centre=centre) for a in chunk])
+            turned = np.stack([rotate_image(detail, a, centre=centre) for a in chunk])
             turned_masks = [rotate_image(mask.astype(np.float64), a, centre=centre) for a in chunk]
-            moving_mask = np.stack(turned_masks) > 0.5
-        ncc, overlap = _masked_ncc_batch(fixed, moving, moving_mask, min_pixels)
+            moving = MovingSpectra.of(turned, np.stack(turned_masks) > 0.5, shape)
+        ncc, overlap = _masked_ncc_spectra(fixed, moving, min_pixels)
         best, peaks = _significant_peaks(ncc, overlap, full)
         scores[first : first + len(chunk)] = best
         # target(q) ~ turned_source(q + d), d = moving.shape - 1 - peak: the translation is -d, in (x, y)
-        d = np.asarray(moving.shape[1:], dtype=np.float64) - 1.0 - peaks
+        d = np.asarray(moving.moving_shape, dtype=np.float64) - 1.0 - peaks
         shifts[first : first + len(chunk)] = (-d[:, ::-1] - origin) * source.pixel_mm * step
     return scores, shifts
+
+
+#: The sweep's turned transforms of the last few sources (with each source, so that its id stays its own):
+#: an all-pairs study registers each source against every target in turn (the project's batches run a
+#: source's pairs one after another), and the turned source's transforms are a third of a correlation's.
+#: Each entry holds 45 turns x 3 transforms, about 6 MB at the defaults; a source meets two or three
+#: transform sizes (they depend on the target's crop).
+_SWEPT: LRUCache[
+    tuple[int, int, tuple[float, ...], tuple[int, int], int], tuple[ReliefImage, list[MovingSpectra]]
+]
+_SWEPT = LRUCache(6)
+
+
+def _swept_spectra(
+    source: ReliefImage, step: int, angles: tuple[float, ...], shape: tuple[int, int], batch: int
+) -> list[MovingSpectra]:
+    """The transforms of ``source``'s cropped square at 1/``step`` turned by each of ``angles`` (by the
+    sparse :func:`_turn_operator`), in batches of ``batch`` turns, at transform size ``shape``; kept in
+    :data:`_SWEPT`."""
+
+    def compute() -> tuple[ReliefImage, list[MovingSpectra]]:
+        detail, mask, start = source.cropped(step)
+        centre = (np.asarray(source.detail.shape, dtype=np.float64) - 1.0) / 2.0 / step - start
+        operator = _turn_operator(detail.shape, (float(centre[0]), float(centre[1])), angles)
+        both = operator @ np.stack([detail.ravel(), mask.ravel().astype(np.float64)], axis=1)
+        turned = both.reshape(len(angles), *detail.shape, 2)
+        moving, masks = turned[..., 0], turned[..., 1] > 0.5
+        return source, [
+            MovingSpectra.of(moving[first : first + batch], masks[first : first + batch], shape)
+            for first in range(0, len(angles), batch)
+        ]
+
+    return _SWEPT.get((id(source), step, angles, shape, batch), compute)[1]
 
 
 def _significant_peaks(
@@ -634,31 +686,37 @@ def _masked_ncc_batch(
 ) -> tuple[FloatImage, FloatImage]:
     """:func:`masked_ncc` for a stack of moving images (axis 0) against one fixed image, the FFTs of the
     whole stack taken in one call each."""
+    return _masked_ncc_spectra(fixed, MovingSpectra.of(moving, moving_mask, fixed.shape), min_overlap)
+
+
+def _masked_ncc_spectra(
+    fixed: FixedSpectra, moving: MovingSpectra, min_overlap: float
+) -> tuple[FloatImage, FloatImage]:
+    """:func:`_masked_ncc_batch` from both sides' transforms."""
     shape = fixed.shape
-    linear = (fixed.fixed_shape[0] + moving.shape[1] - 1, fixed.fixed_shape[1] + moving.shape[2] - 1)
+    if moving.shape != shape:
+        raise ValueError(f"moving spectra of transforms {moving.shape} do not match the fixed ones' {shape}")
+    linear = (
+        fixed.fixed_shape[0] + moving.moving_shape[0] - 1,
+        fixed.fixed_shape[1] + moving.moving_shape[1] - 1,
+    )
     out = (min(linear[0], shape[0]), min(linear[1], shape[1]))
     # entries below these hold wrapped sums when the transforms are shorter than the correlation
     wrapped = (linear[0] - out[0], linear[1] - out[1])
-    mm = moving_mask[:, ::-1, ::-1].astype(np.float32)
-    m = moving[:, ::-1, ::-1].astype(np.float32) * mm
-
-    def forward(a: FloatImage) -> NDArray[np.complex128]:
-        return fft.rfft2(a, shape, axes=(-2, -1))
 
     def backward(a: NDArray[np.complex128]) -> FloatImage:
         return fft.irfft2(a, shape, axes=(-2, -1))
 
     # The moments over the whole transforms (contiguous, in place where an array is not needed again:
     # a third less time than on the cut views), cut to the linear correlation's shifts at the end.
-    F_m, F_mm = forward(m), forward(mm)
-    overlap = backward(fixed.F_fm * F_mm)
+    overlap = backward(fixed.F_fm * moving.F_mm)
     np.maximum(np.rint(overlap, out=overlap), 1.0, out=overlap)
-    sum_f, sum_m = backward(fixed.F_f * F_mm), backward(fixed.F_fm * F_m)
-    numerator = backward(fixed.F_f * F_m)
+    sum_f, sum_m = backward(fixed.F_f * moving.F_mm), backward(fixed.F_fm * moving.F_m)
+    numerator = backward(fixed.F_f * moving.F_m)
     numerator -= sum_f * sum_m / overlap
-    var_f = backward(fixed.F_ff * F_mm)
+    var_f = backward(fixed.F_ff * moving.F_mm)
     var_f -= np.divide(np.square(sum_f, out=sum_f), overlap, out=sum_f)
-    var_m = backward(fixed.F_fm * forward(m * m))
+    var_m = backward(fixed.F_fm * moving.F_mm_m)
     var_m -= np.divide(np.square(sum_m, out=sum_m), overlap, out=sum_m)
     var_f *= var_m
     denominator = np.sqrt(np.maximum(var_f, 0.0, out=var_f), out=var_f)[:, : out[0], : out[1]]
