@@ -8,7 +8,7 @@ import pytest
 from coindie.errors import ParameterError
 from coindie.scan import Scan
 from coindie.similarity import HistogramSettings, c2c_distances, c2c_histogram, main_normal
-from coindie.similarity.histogram import clear_cache, sampled_face
+from coindie.similarity.histogram import clear_cache, density_histogram, sampled_face
 
 # Linear algebra under test (transformed points, distances and bin edges):
 # make test reruns this module under other OpenBLAS kernels.
@@ -63,6 +63,24 @@ def test_distances_use_the_transform_and_drop_steep_points() -> None:
     np.testing.assert_allclose(d, [0.01, 0.02, 0.03], atol=1e-12)
     # Without the transform the source is 5 mm away: nothing within 0.6 mm, an all-zero histogram.
     assert not c2c_histogram(source, _plane(), np.eye(4)).any()
+
+
+def test_the_search_stopped_at_the_maximum_gives_the_whole_searchs_histogram() -> None:
+    """The histogram asks the k-d tree for distances up to its maximum only: the distances within it are
+    the whole search's, those beyond come back infinite, and the histogram is the same, including a
+    distance that equals the maximum to the last bit."""
+    clear_cache()
+    source, target, T = _source([0.2, 0.5999, 0.6, 0.6001, 0.9, 0.05]), _plane(), _T_target_source()
+    whole = c2c_distances(source, target, T)
+    edge = float(whole[2])  # about 0.6 mm: the maximum, to the last bit
+    settings = HistogramSettings(max_distance_mm=edge)
+    cut = c2c_distances(source, target, T, up_to=float(np.nextafter(edge, np.inf)))
+    within = whole <= edge
+    np.testing.assert_array_equal(cut[within], whole[within])
+    assert np.isinf(cut[~within]).all() and (~within).sum() == 2
+    np.testing.assert_array_equal(
+        c2c_histogram(source, target, T, settings), density_histogram(whole, settings)
+    )
 
 
 def test_bins_range_and_normal_angle_are_settable() -> None:
