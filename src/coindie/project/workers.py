@@ -154,9 +154,10 @@ class SampledRegistrar:
 
     def coarse(self, scan: Scan) -> Scan:
         from coindie.preprocess import grid_sample
+        from coindie.registration.clouds import freeze
 
         if scan not in self._coarse:
-            self._coarse[scan] = grid_sample(scan, self.grid_mm)
+            self._coarse[scan] = freeze(grid_sample(scan, self.grid_mm))
         return self._coarse[scan]
 
 
@@ -195,6 +196,8 @@ class _Worker:
         self.cache_faces = cache_faces
 
     def face(self, face_id: str, path: str) -> Scan:
+        from coindie.registration.clouds import freeze
+
         # Keyed by the cache file, whose name holds the face's content hash: a process that runs several
         # projects in turn (one worker runs in the caller's process) must not take one hoard's L0001D
         # for another's.
@@ -203,7 +206,7 @@ class _Worker:
             return self.faces[path]
         with np.load(path) as data:
             points, normals = data["points"].astype(np.float64), data["normals"].astype(np.float64)
-        scan = Scan(points=points, normals=normals, id=face_id)
+        scan = freeze(Scan(points=points, normals=normals, id=face_id))
         self.faces[path] = scan
         while len(self.faces) > self.cache_faces:
             self.faces.popitem(last=False)
