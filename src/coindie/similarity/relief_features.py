@@ -34,7 +34,7 @@ from threading import Lock
 from typing import Any, ClassVar
 
 import numpy as np
-from scipy import ndimage
+from scipy import fft, ndimage
 
 from coindie.arrays import BoolArray, FloatArray
 from coindie.params import Configurable, Rule, param
@@ -52,6 +52,8 @@ _FRAME_POINTS = 6000
 _MAX_SOURCE_POINTS = 40_000
 #: Pixels whose local window sees less than this share of overlap are left out of the local statistics.
 _MIN_WINDOW_WEIGHT = 0.5
+#: Blurs at least this wide (pixels) are taken by FFT (:func:`_gaussian`).
+_FFT_SIGMA_PX = 6.0
 _EPS = 1e-12
 
 
@@ -160,7 +162,28 @@ class _MaskWeights:
 
 
 def _gaussian(values: FloatArray, sigma_px: float) -> FloatArray:
-    return ndimage.gaussian_filter(values, sigma_px, mode="constant", cval=0.0)
+    """scipy's ``gaussian_filter`` (zeros beyond the image, the kernel cut at 4 sigma); wide kernels by FFT.
+
+    The shape, coarse and window blurs (10-30 pixels) run scipy's direct sums over 80-240 taps a pixel,
+    which is most of the features' time. Their FFT convolution with the same kernel gives the same values
+    to float32 rounding (differences of about 1e-8 on heights of 0.1-1) in a third to a half of the time
+    on a face's crop (measured at 280 x 280: 13.4 -> 4.9 ms at sigma 30, 5.9 -> 3.7 ms at 10, and slower
+    below about 6)."""
+    if sigma_px < _FFT_SIGMA_PX:
+        return ndimage.gaussian_filter(values, sigma_px, mode="constant", cval=0.0)
+    radius = int(4.0 * sigma_px + 0.5)  # scipy's truncate=4.0
+    taps = np.exp(-0.5 * (np.arange(-radius, radius + 1, dtype=np.float64) / sigma_px) ** 2)
+    taps /= taps.sum()
+    blurred = np.asarray(values, dtype=np.float64)
+    for axis in range(blurred.ndim):
+        length = blurred.shape[axis]
+        size = fft.next_fast_len(length + 2 * radius, real=True)  # no wrap: a linear convolution
+        kernel = fft.rfft(taps, size).reshape([-1 if a == axis else 1 for a in range(blurred.ndim)])
+        full = fft.irfft(fft.rfft(blurred, size, axis=axis) * kernel, size, axis=axis)
+        blurred = full[
+            tuple(slice(radius, radius + length) if a == axis else slice(None) for a in range(blurred.ndim))
+        ]
+    return blurred.astype(np.asarray(values).dtype)
 
 
 def _crop(mask: BoolArray) -> tuple[slice, slice]:
