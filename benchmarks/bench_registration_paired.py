@@ -11,16 +11,23 @@ versions register each pair in turn (which goes first alternates), in the three 
 the table gives the median of those differences beside each version's median time. The other commit's
 package is copied and imported under another name (``coindie_base``). Same pairs and turns as
 ``coindie bench registration``; BLAS held to one thread; no pass/fail.
+
+``--study N`` times a die study instead: every pair of the first N faces of each side, as the scans lie,
+in the order a project's batch runs them (by source, then target), one method per version kept for the
+whole study as a worker keeps it (its caches warm as they would be). Most of these pairs are of
+different dies, which the same-die pairs above leave out; this is the time per pair a user meets.
 """
 
 from __future__ import annotations
 
 import argparse
 import importlib
+import inspect
 import re
 import shutil
 import sys
 import tempfile
+import time
 from pathlib import Path
 from types import ModuleType
 
@@ -31,7 +38,9 @@ from threadpoolctl import threadpool_limits
 import coindie.registration
 from coindie.bench.registration import SITUATIONS, _grid_scan, parse_method, plan_pairs, timed_in_situation
 from coindie.io.truth import load_truth
+from coindie.registration.clouds import freeze
 from coindie.registration.learned.cache import clear_caches
+from coindie.scan import Scan
 
 
 def import_base(checkout: Path, into: Path) -> ModuleType:
@@ -56,8 +65,12 @@ def main() -> None:
     parser.add_argument("hoard", type=Path)
     parser.add_argument("--method", default="relief", help="a method, or a benchmark label")
     parser.add_argument("--pairs", type=int, default=60)
+    parser.add_argument("--study", type=int, default=0, help="time all pairs of N faces a side instead")
     args = parser.parse_args()
     name, params = parse_method(args.method)
+    if args.study:
+        time_study(args.base, args.hoard, name, params, args.study)
+        return
     with tempfile.TemporaryDirectory() as folder:
         base = import_base(args.base, Path(folder))
         base_scan = importlib.import_module("coindie_base.scan").Scan
@@ -112,6 +125,63 @@ def main() -> None:
             new_stage = np.median(stages["this", situation].get(stage, [np.nan]))
             cells.append(f"{old_stage:.4f} / {new_stage:.4f}")
         print(f"| {situation} | " + " | ".join(cells) + " |")
+
+
+def time_study(checkout: Path, hoard: Path, name: str, params: dict[str, object], n_faces: int) -> None:
+    """Both versions register every pair of ``n_faces`` faces a side, pair by pair in turn."""
+    import itertools
+
+    with tempfile.TemporaryDirectory() as folder:
+        base = import_base(checkout, Path(folder))
+        base_scan = importlib.import_module("coindie_base.scan").Scan
+        truth = load_truth(hoard)
+        pairs = []
+        for side in sorted({face_id[-1] for face_id in truth.faces}):  # L0001D: obverse
+            faces = sorted(f for f in truth.faces if f[-1] == side)[:n_faces]
+            pairs += [
+                (a, b, truth.faces[a].die == truth.faces[b].die) for a, b in itertools.combinations(faces, 2)
+            ]
+        scans = {f: _grid_scan(str(truth.faces[f].path)) for f in track(truth.faces, description="reading")}
+        base_scans = {f: base_scan(points=s.points, normals=s.normals) for f, s in scans.items()}
+        # this version's worker freezes the faces it loads (read-only arrays: their digests are kept)
+        scans = {f: freeze(Scan(points=s.points.copy(), normals=s.normals)) for f, s in scans.items()}
+        # every face of the study stays cached, as a project's worker sizes its caches for a batch
+        size = 2 * n_faces + 2
+        if "cloud_cache_size" in inspect.signature(base.get_method).parameters:
+            base_method = base.get_method(name, cloud_cache_size=size, **params)
+        else:  # older versions: a module-wide size, which their workers widened
+            importlib.import_module("coindie_base.registration.base").CLOUD_CACHE_SIZE = size
+            base_method = base.get_method(name, **params)
+        versions = {
+            "base": (base_method, base_scans),
+            "this": (coindie.registration.get_method(name, cloud_cache_size=size, **params), scans),
+        }
+        seconds: dict[str, list[float]] = {v: [] for v in versions}
+        poses: dict[str, list[np.ndarray | None]] = {v: [] for v in versions}
+        with threadpool_limits(limits=1):
+            for k, (a, b, _) in enumerate(track(pairs, description="pairs")):
+                for version in ("base", "this") if k % 2 == 0 else ("this", "base"):
+                    method, faces = versions[version]
+                    start = time.perf_counter()
+                    result = method.register(faces[a], faces[b])
+                    seconds[version].append(time.perf_counter() - start)
+                    poses[version].append(result.T_target_source)
+    same_die = np.array([same for _, _, same in pairs])
+    print(f"\n{name}: a study of {n_faces} faces a side, {len(pairs)} pairs, one core; base = {checkout}\n")
+    print("| pairs | base (s) | this (s) | difference (median of pairs) | pairs faster |")
+    print("|---|---:|---:|---:|---:|")
+    for label, chosen in (
+        ("all", np.ones_like(same_die)),
+        ("same die", same_die),
+        ("different dies", ~same_die),
+    ):
+        old, new = np.array(seconds["base"])[chosen], np.array(seconds["this"])[chosen]
+        print(
+            f"| {label} ({chosen.sum()}) | {np.mean(old):.4f} mean, {np.median(old):.4f} median "
+            f"| {np.mean(new):.4f} mean, {np.median(new):.4f} median | {np.median(new - old):+.4f} "
+            f"| {np.mean(new < old):.0%} |"
+        )
+    print_pose_differences(poses["base"], poses["this"])
 
 
 def print_pose_differences(base: list[np.ndarray | None], this: list[np.ndarray | None]) -> None:
