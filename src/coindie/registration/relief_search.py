@@ -158,7 +158,7 @@ class MovingSpectra:
     moving_shape: tuple[int, int]
     F_m: NDArray[np.complex128]
     F_mm: NDArray[np.complex128]
-    F_mm_m: NDArray[np.complex128]  # of the squared image
+    F_m_squared: NDArray[np.complex128]
 
     @classmethod
     def of(cls, moving: FloatImage, moving_mask: BoolImage, shape: tuple[int, int]) -> MovingSpectra:
@@ -516,10 +516,7 @@ def correlate_turns(
 #: source's pairs one after another), and the turned source's transforms are a third of a correlation's.
 #: Each entry holds 45 turns x 3 transforms, about 6 MB at the defaults; a source meets two or three
 #: transform sizes (they depend on the target's crop).
-_SWEPT: LRUCache[
-    tuple[int, int, tuple[float, ...], tuple[int, int], int], tuple[ReliefImage, list[MovingSpectra]]
-]
-_SWEPT = LRUCache(6)
+_SWEPT: LRUCache[tuple[object, ...], tuple[ReliefImage, list[MovingSpectra]]] = LRUCache(6)
 
 
 def _swept_spectra(
@@ -716,7 +713,7 @@ def _masked_ncc_spectra(
     numerator -= sum_f * sum_m / overlap
     var_f = backward(fixed.F_ff * moving.F_mm)
     var_f -= np.divide(np.square(sum_f, out=sum_f), overlap, out=sum_f)
-    var_m = backward(fixed.F_fm * moving.F_mm_m)
+    var_m = backward(fixed.F_fm * moving.F_m_squared)
     var_m -= np.divide(np.square(sum_m, out=sum_m), overlap, out=sum_m)
     var_f *= var_m
     denominator = np.sqrt(np.maximum(var_f, 0.0, out=var_f), out=var_f)[:, : out[0], : out[1]]
