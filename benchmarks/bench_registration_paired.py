@@ -144,7 +144,7 @@ def time_study(checkout: Path, hoard: Path, name: str, params: dict[str, object]
         scans = {f: _grid_scan(str(truth.faces[f].path)) for f in track(truth.faces, description="reading")}
         base_scans = {f: base_scan(points=s.points, normals=s.normals) for f, s in scans.items()}
         # this version's worker freezes the faces it loads (read-only arrays: their digests are kept)
-        scans = {f: freeze(Scan(points=s.points.copy(), normals=s.normals)) for f, s in scans.items()}
+        scans = {f: freeze(Scan(points=s.points.copy(), normals=s.normals.copy())) for f, s in scans.items()}
         # every face of the study stays cached, as a project's worker sizes its caches for a batch
         size = 2 * n_faces + 2
         if "cloud_cache_size" in inspect.signature(base.get_method).parameters:
