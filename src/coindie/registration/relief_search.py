@@ -136,15 +136,11 @@ class FixedSpectra:
                 for a, b in zip(fixed.shape, moving_shape, strict=True)
             ]
             shape = (full[0], full[1])
-        fm = fixed_mask.astype(np.float32)
-        f = fixed.astype(np.float32) * fm
         return cls(
             (shape[0], shape[1]),
             (fixed.shape[0], fixed.shape[1]),
             (moving_shape[0], moving_shape[1]),
-            fft.rfft2(f, shape),
-            fft.rfft2(fm, shape),
-            fft.rfft2(f * f, shape),
+            *_masked_transforms(fixed, fixed_mask, shape),
         )
 
 
@@ -162,12 +158,20 @@ class MovingSpectra:
 
     @classmethod
     def of(cls, moving: FloatImage, moving_mask: BoolImage, shape: tuple[int, int]) -> MovingSpectra:
-        mm = moving_mask[:, ::-1, ::-1].astype(np.float32)
-        m = moving[:, ::-1, ::-1].astype(np.float32) * mm
-        forward = fft.rfft2(m, shape, axes=(-2, -1)), fft.rfft2(mm, shape, axes=(-2, -1))
-        return cls(
-            shape, (moving.shape[1], moving.shape[2]), *forward, fft.rfft2(m * m, shape, axes=(-2, -1))
-        )
+        """Each image reversed in both axes: the products with the fixed side's transforms are then
+        correlations."""
+        flipped = _masked_transforms(moving[:, ::-1, ::-1], moving_mask[:, ::-1, ::-1], shape)
+        return cls(shape, (moving.shape[1], moving.shape[2]), *flipped)
+
+
+def _masked_transforms(
+    values: FloatImage, mask: BoolImage, shape: tuple[int, int]
+) -> tuple[NDArray[np.complex128], NDArray[np.complex128], NDArray[np.complex128]]:
+    """The float32 transforms at ``shape`` (of the last two axes) of the values inside the mask, of the
+    mask and of the squared values inside it: one side's half of a masked correlation."""
+    inside = mask.astype(np.float32)
+    masked = values.astype(np.float32) * inside
+    return fft.rfft2(masked, shape), fft.rfft2(inside, shape), fft.rfft2(masked * masked, shape)
 
 
 def masked_ncc(
@@ -493,7 +497,9 @@ def correlate_turns(
     scores = np.empty(len(angles))
     shifts = np.empty((len(angles), 2))
     if reuse_turns:
-        spectra = _swept_spectra(source, step, tuple(map(float, angles)), shape, batch)
+        spectra = _swept_spectra(
+            source, step, (detail, mask, centre), tuple(map(float, angles)), shape, batch
+        )
     for first in range(0, len(angles), batch):
         chunk = angles[first : first + batch]
         if reuse_turns:
@@ -520,15 +526,19 @@ _SWEPT: LRUCache[tuple[object, ...], tuple[ReliefImage, list[MovingSpectra]]] = 
 
 
 def _swept_spectra(
-    source: ReliefImage, step: int, angles: tuple[float, ...], shape: tuple[int, int], batch: int
+    source: ReliefImage,
+    step: int,
+    cropped: tuple[FloatImage, BoolImage, NDArray[np.float64]],
+    angles: tuple[float, ...],
+    shape: tuple[int, int],
+    batch: int,
 ) -> list[MovingSpectra]:
-    """The transforms of ``source``'s cropped square at 1/``step`` turned by each of ``angles`` (by the
-    sparse :func:`_turn_operator`), in batches of ``batch`` turns, at transform size ``shape``; kept in
-    :data:`_SWEPT`."""
+    """The transforms of ``source``'s cropped square at 1/``step`` (``cropped``: its detail, its mask and
+    the image's centre in it) turned by each of ``angles`` (by the sparse :func:`_turn_operator`), in
+    batches of ``batch`` turns, at transform size ``shape``; kept in :data:`_SWEPT`."""
+    detail, mask, centre = cropped
 
     def compute() -> tuple[ReliefImage, list[MovingSpectra]]:
-        detail, mask, start = source.cropped(step)
-        centre = (np.asarray(source.detail.shape, dtype=np.float64) - 1.0) / 2.0 / step - start
         operator = _turn_operator(detail.shape, (float(centre[0]), float(centre[1])), angles)
         both = operator @ np.stack([detail.ravel(), mask.ravel().astype(np.float64)], axis=1)
         turned = both.reshape(len(angles), *detail.shape, 2)
