@@ -67,6 +67,8 @@ def main() -> None:
     parser.add_argument("--pairs", type=int, default=60)
     parser.add_argument("--study", type=int, default=0, help="time all pairs of N faces a side instead")
     args = parser.parse_args()
+    if args.study == 1 or args.study < 0:
+        parser.error(f"--study needs at least 2 faces a side (0: time same-die pairs). Got {args.study}.")
     name, params = parse_method(args.method)
     if args.study:
         time_study(args.base, args.hoard, name, params, args.study)

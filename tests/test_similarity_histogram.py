@@ -81,6 +81,8 @@ def test_the_search_stopped_at_the_maximum_gives_the_whole_searchs_histogram() -
     np.testing.assert_array_equal(
         c2c_histogram(source, target, T, settings), density_histogram(whole, settings)
     )
+    with pytest.raises(ParameterError, match="up_to"):
+        c2c_distances(source, target, T, up_to=-0.6)
 
 
 def test_bins_range_and_normal_angle_are_settable() -> None:

@@ -109,7 +109,8 @@ def _array_digest(array: np.ndarray) -> bytes:
 
 
 def freeze(scan: Scan) -> Scan:
-    """Make the scan's points and normals read-only (their content keys are then computed once)."""
+    """Make the scan's points and normals read-only where they own their data (their content keys are
+    then computed once); a view of another array is left as it is, and hashed each time."""
     for array in (scan.points, scan.normals):
         if array is not None and array.flags.owndata:
             array.setflags(write=False)

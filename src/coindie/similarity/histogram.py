@@ -116,6 +116,8 @@ def c2c_distances(
     """
     settings = settings or HistogramSettings()
     T = _checked_transform(T_target_source)
+    if up_to is not None and not up_to > 0:
+        raise ParameterError(f"The 'up_to' parameter of c2c_distances must be > 0 mm or None. Got {up_to!r}.")
     src = sampled_face(source, settings.source_grid_mm, settings.max_normal_angle_rad, faces)
     tgt = sampled_face(target, settings.target_grid_mm, settings.max_normal_angle_rad, faces)
     return _distances(src.points, tgt, T, up_to)
