@@ -118,3 +118,57 @@ def test_the_pulls_are_fitted_across_clusters_that_keep_the_dies_together() -> N
         assert fitted_across <= split
         fewer += fitted_across < split - 0.05
     assert fewer >= 2
+
+
+def _vetoed_hoard(seed: int, gap: float) -> tuple[np.ndarray, np.ndarray]:
+    """Scans unlike the scorer's training scans: every same-die pair below log-odds 0, ``gap`` above the
+    other dies' pairs of the design."""
+    rng = np.random.default_rng(seed)
+    die = np.repeat(np.arange(6), [9, 7, 6, 4, 3, 2])
+    i, j = np.triu_indices(len(die), k=1)
+    same = die[i] == die[j]
+    return die, np.where(same, -16.0 + gap, -16.0) + rng.normal(0.0, 1.5, len(i))
+
+
+def _mixture_graph(die: np.ndarray, log_odds: np.ndarray) -> ProbabilityGraph:
+    """The graph calibrated by the hoard's mixture, the scorer's veto set aside."""
+    from coindie.similarity.calibration import calibrate_hoard
+
+    calibration = calibrate_hoard(1.0 / (1.0 + np.exp(-log_odds)), scorer_veto=False)
+    assert calibration.separates
+    n = len(die)
+    i, j = np.triu_indices(n, k=1)
+    names = [f"L{k:04d}D" for k in range(n)]
+    weights = calibration.probability(log_odds)
+    return ProbabilityGraph.from_edges(
+        [(names[a], names[b], w) for a, b, w in zip(i, j, weights, strict=True)], names
+    )
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_the_hoards_own_clusters_overrule_a_scorers_veto_where_they_stand_out(seed: int) -> None:
+    die, log_odds = _vetoed_hoard(seed, gap=11.0)
+    truth, calibrated_graph = _graphs(die, log_odds)
+    kept = cluster_twice(calibrated_graph, "consensus")
+    overruled = cluster_twice(calibrated_graph, "consensus", lambda: _mixture_graph(die, log_odds))
+    assert not kept.overruled_scorer and kept.first_silhouette < second_pass.CLEAR_SILHOUETTE
+    assert overruled.overruled_scorer and overruled.first_silhouette >= second_pass.CLEAR_SILHOUETTE
+    assert evaluate(overruled.clusters.labels, truth).fmi > 0.95
+    assert evaluate(overruled.clusters.labels, truth).fmi > evaluate(kept.clusters.labels, truth).fmi
+
+
+def test_a_vetoed_mixture_whose_clusters_do_not_stand_out_is_not_used() -> None:
+    """The mixture's own clusters murky too (a worn hoard: each face's pull as large as the same-die gap):
+    the veto stands, and the clustering is the one without the mixture (the second pass)."""
+    die, log_odds = _worn_hoard(0)
+    _, calibrated_graph = _graphs(die, log_odds)
+    tried = []
+
+    def murky_mixture() -> ProbabilityGraph:
+        tried.append(True)
+        return calibrated_graph(None)
+
+    result = cluster_twice(calibrated_graph, "consensus", murky_mixture)
+    alone = cluster_twice(calibrated_graph, "consensus")
+    assert tried and not result.overruled_scorer and result.second_pass
+    assert result.clusters.labels == alone.clusters.labels

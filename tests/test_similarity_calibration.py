@@ -126,3 +126,25 @@ def test_most_pairs_same_die_is_implausible_for_every_pair_but_not_for_candidate
     assert not every_pair.separates and "more than 50%" in every_pair.message
     candidates = calibrate_hoard(probabilities, max_same_share=0.95)
     assert candidates.separates and abs(candidates.same_share - same_die.mean()) < 0.03
+
+
+def test_a_scorer_from_other_scans_vetoes_a_split_that_the_hoard_can_still_have() -> None:
+    """Another scanner lowers every same-die score below log-odds 0, yet they stand apart from the other
+    dies' (an independent generator's coarse scanner: -5.1 +- 3.3 against -16.2 +- 1.4). The scorer's
+    judgement refuses the split and says it alone did (``vetoed``); without the veto the hoard's mixture
+    is a split, with the right share. Any other failure is not a veto alone."""
+    probabilities, same_die = _mixture(0.12, 1500, seed=21, same=(-5.0, 2.5), different=(-16.0, 1.5))
+    vetoed = calibrate_hoard(probabilities)
+    assert not vetoed.separates and vetoed.vetoed
+    assert "judged different-die by the scorer" in vetoed.message and "unless" in vetoed.message
+    mixture = calibrate_hoard(probabilities, scorer_veto=False)
+    assert mixture.separates and not mixture.vetoed
+    assert abs(mixture.same_share - same_die.mean()) < 0.02
+    calibrated = mixture.probability(log_odds(probabilities))
+    assert (calibrated[same_die] > MIXTURE_THRESHOLD).mean() > 0.85  # the populations overlap below that
+    assert (calibrated[~same_die] > MIXTURE_THRESHOLD).mean() < 0.005
+    # most pairs in the upper component as well: not a split, veto or not
+    crowded, _ = _mixture(0.7, 1000, seed=22, same=(-5.0, 2.5), different=(-16.0, 1.5))
+    for veto in (True, False):
+        refused = calibrate_hoard(crowded, scorer_veto=veto)
+        assert not refused.separates and not refused.vetoed and "more than 50%" in refused.message

@@ -164,9 +164,15 @@ def evaluate_row(row: str, scorer_name: str, scorer: Any, project: Any, hoard: P
         side_faces = [s.face_id for s in project.scans("ok") if s.side == side]
         last: dict[str, Any] = {}
         side_graph = partial(_side_graph, mine, raw[on], valid[on], populations, side_faces, last)
-        result = cluster_twice(side_graph, CLUSTERING)
+        first_graph = side_graph(None)  # and whether the scorer vetoed the hoard's calibration
+        separates, vetoed = last["separates"], last["vetoed"]
+        result = cluster_twice(
+            partial(_first_or_again, first_graph, side_graph),
+            CLUSTERING,
+            partial(side_graph, None, scorer_veto=False) if vetoed else None,
+        )
         calibrated[on] = last["weights"]
-        all_separate &= last["separates"]
+        all_separate &= separates or result.overruled_scorer
         cuts.append(result.choice.threshold)
         parts.append(result.clusters)
     tau, how = float(np.mean(cuts)), "mixture" if all_separate else "silhouette"
@@ -181,6 +187,11 @@ def evaluate_row(row: str, scorer_name: str, scorer: Any, project: Any, hoard: P
     )  # fmt: skip
 
 
+def _first_or_again(first: Any, side_graph: Callable[[Any], Any], across: dict[str, Any] | None) -> Any:
+    """The first pass's graph (already made), or the side's graph made again across a first clustering."""
+    return first if across is None else side_graph(across)
+
+
 def _side_graph(
     pairs: list[dict[str, Any]],
     raw: np.ndarray,
@@ -189,6 +200,8 @@ def _side_graph(
     faces: list[str],
     last: dict[str, Any],
     across: dict[str, Any] | None,
+    *,
+    scorer_veto: bool = True,
 ) -> Any:
     """One side's graph of probabilities calibrated on the hoard, after each face's pull (fitted across
     the clusters ``across``) is taken off, as ``Project.probability_graph(side, across=...)`` (the bench
@@ -199,10 +212,10 @@ def _side_graph(
 
     sources, targets = [p["source"] for p in pairs], [p["target"] for p in pairs]
     last["weights"], calibration = calibrated_side(
-        raw, valid, sources, targets, across=across, prior=populations
+        raw, valid, sources, targets, across=across, prior=populations, scorer_veto=scorer_veto
     )
-    if across is None:
-        last["separates"] = calibration.separates
+    if across is None and scorer_veto:
+        last["separates"], last["vetoed"] = calibration.separates, calibration.vetoed
     edges = [(p["source"], p["target"], float(w)) for p, w in zip(pairs, last["weights"], strict=True)]
     return ProbabilityGraph.from_edges(edges, faces)
 

@@ -504,6 +504,7 @@ class Project:
         *,
         calibrated: bool = True,
         across: Mapping[str, object] | None = None,
+        scorer_veto: bool = True,
     ) -> ProbabilityGraph:
         """The project's scored pairs as a :class:`coindie.clustering.ProbabilityGraph`: every usable face
         of ``side`` (``D`` or ``R``; both when None, with no link across sides) and an edge per done pair
@@ -511,7 +512,9 @@ class Project:
         (:meth:`calibration`), unless ``calibrated`` is False (the scorer's own probabilities).
         ``across``: a first clustering (face id -> label); each face's pull on its scores, fitted on the
         pairs across its clusters, is taken off before the calibration
-        (:mod:`coindie.similarity.face_effects`)."""
+        (:mod:`coindie.similarity.face_effects`). ``scorer_veto=False``: the hoard's mixture calibrates
+        even where the scorer judges its upper population different-die
+        (:func:`coindie.similarity.calibrate_hoard`)."""
         from coindie.clustering import ProbabilityGraph
 
         faces = [s.face_id for s in self.scans("ok") if side is None or s.side == side]
@@ -529,6 +532,7 @@ class Project:
                 weights[on], _ = calibrated_side(
                     weights[on], valid[on], [p["source"] for p in mine], [p["target"] for p in mine],
                     across=across, prior=prior, what=what, max_same_share=_max_same_share(mine),
+                    scorer_veto=scorer_veto,
                 )  # fmt: skip
         edges = [(p["source"], p["target"], float(w)) for p, w in zip(pairs, weights, strict=True)]
         return ProbabilityGraph.from_edges(edges, faces, where=str(self.folder))
@@ -574,7 +578,9 @@ class Project:
         out (:mod:`coindie.clustering.second_pass`): each face's pull on its scores (a well-kept, finely
         scanned face scores higher with every face of its design than a worn one) fitted on the pairs
         across the first clusters and taken off (:mod:`coindie.similarity.face_effects`), the graph
-        calibrated again and cut again, its consensus comparing faces by direction alone."""
+        calibrated again and cut again, its consensus comparing faces by direction alone. Where the scorer
+        vetoed the hoard's own calibration (:attr:`coindie.similarity.HoardCalibration.vetoed`), that
+        calibration's clusters are kept if they stand out (:func:`cluster_twice`)."""
         from coindie.clustering import PAPER_THRESHOLD
         from coindie.clustering.algorithms import ConsensusLinkage
         from coindie.clustering.second_pass import cluster_twice
@@ -584,13 +590,21 @@ class Project:
             return graph, PAPER_THRESHOLD, "the paper's (too few faces to choose one)", {}
         if method != ConsensusLinkage.NAME:
             return graph, *self.auto_threshold(side, method, graph), {}
+        vetoed = self.calibration(side).vetoed
         result = cluster_twice(
-            lambda across: graph if across is None else self.probability_graph(side, across=across), method
+            lambda across: graph if across is None else self.probability_graph(side, across=across),
+            method,
+            (lambda: self.probability_graph(side, scorer_veto=False)) if vetoed else None,
         )
         note = ""
         if result.second_pass:
             note = f", each face's pull taken off (first clusters' silhouette {result.first_silhouette:.2f})"
-        separates = self.mixture_threshold(side) is not None
+        if result.overruled_scorer:
+            note = (
+                ", on the hoard's own score populations, which the scorer had judged different-die: their "
+                f"clusters stand out (silhouette {result.first_silhouette:.2f})"
+            )
+        separates = self.mixture_threshold(side) is not None or result.overruled_scorer
         how = _consensus_how(result.choice, note, separates=separates)
         return result.graph, result.choice.threshold, how, result.params
 

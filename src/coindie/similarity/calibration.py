@@ -27,6 +27,14 @@ components; an upper component of less than one pair or of most pairs; or one wh
 scorer itself judges different-die), the hoard's scores do not separate: the scorer's own probabilities are
 kept and :attr:`HoardCalibration.message` says so in words, with the numbers, for ``coindie run`` and
 ``coindie status``.
+
+The last test is the scorer's own judgement, and a scorer's sense of scale comes from its training hoards:
+on another scanner the same-die pairs can all fall below log-odds 0 and still stand apart from the rest
+(a coarse, noisy scanner of an independent generator: upper component -5.1 ± 3.3 against -16.2 ± 1.4).
+Where only that test fails and the split is clear (Ashman's D at least :data:`OVERRULE_SEPARATION`),
+:attr:`HoardCalibration.vetoed` says so, and ``calibrate_hoard(..., scorer_veto=False)`` gives the
+mixture's calibration all the same; whether to trust it is left to the hoard's own clusters
+(:func:`coindie.clustering.second_pass.cluster_twice`).
 """
 
 from __future__ import annotations
@@ -43,6 +51,13 @@ from coindie.errors import ParameterError
 
 #: Ashman's D between the two components below which they are not told apart.
 MIN_SEPARATION = 2.0
+#: Ashman's D a split must reach for the hoard's clusters to be asked to overrule the scorer's veto
+#: (:attr:`HoardCalibration.vetoed`): a clear bimodality, not a mere one. On five all-hard hoards of
+#: coindie's generator the vetoed splits below it (D 2.4-2.8) include one whose own clusters, at
+#: silhouette 0.596 (a hair below the gate), would have taken its side from FMI 0.95 to 0.81; the splits
+#: kept (D 3.2-3.9) and those of the independent generator's coarse and two-scanner hoards (4.0-5.5)
+#: held (BENCHMARK.md, "An independent generator").
+OVERRULE_SEPARATION = 3.0
 #: Largest share of same-die pairs a hoard's mixture may claim: most of *all* same-side pairs are of
 #: different dies. Pairs planned by candidate search are each face's nearest faces, mostly of its own die,
 #: and may be up to :data:`MAX_SAME_SHARE_CANDIDATES` same-die.
@@ -76,7 +91,9 @@ class HoardCalibration:
     ``same`` and ``different`` are (location, scale) of the log-odds of each component (a Student-t with
     :data:`TAIL_DOF` degrees of freedom); ``same_share`` the mixture weight of the same-die component;
     ``separation`` Ashman's D on the two scales; ``refused`` the pairs whose registration was refused (no
-    pose), which the mixture does not see.
+    pose), which the mixture does not see; ``vetoed``: the scores do not separate only because the
+    scorer judges the upper component's typical pair different-die, and the mixture is otherwise a clear
+    split (Ashman's D at least :data:`OVERRULE_SEPARATION`).
     """
 
     n_pairs: int
@@ -87,6 +104,7 @@ class HoardCalibration:
     separation: float
     separates: bool
     message: str
+    vetoed: bool = False
 
     def probability(self, log_odds: ArrayLike) -> FloatArray:
         """Calibrated probability of each log-odds value: the mixture's posterior when the populations
@@ -129,13 +147,16 @@ def calibrate_hoard(
     prior: Mapping[str, tuple[float, float]] | None = None,
     what: str = "same-side pairs",
     max_same_share: float = MAX_SAME_SHARE,
+    scorer_veto: bool = True,
 ) -> HoardCalibration:
     """Fit the two populations of a hoard's scored pairs (``probabilities`` of the pairs whose
     registration found a pose; ``refused`` the others). ``prior``: the scorer's training populations
     ``{"same": (mean, sd), "different": (mean, sd)}`` of the log-odds, where EM starts (as location
     and scale).
     ``max_same_share``: the largest plausible same-die share (:data:`MAX_SAME_SHARE` for every pair of
-    a side, :data:`MAX_SAME_SHARE_CANDIDATES` for pairs planned by candidate search)."""
+    a side, :data:`MAX_SAME_SHARE_CANDIDATES` for pairs planned by candidate search).
+    ``scorer_veto``: whether an upper component whose typical pair the scorer judges different-die is
+    refused (the default); False keeps the mixture where it is otherwise a split."""
     z = log_odds(probabilities).ravel()
     total = len(z) + refused
     if refused < 0:
@@ -157,19 +178,29 @@ def calibrate_hoard(
     refused_note = (
         f"; {refused} of {total} ({refused / total:.0%}) refused by the registration" if refused else ""
     )
-    failures = _implausible(separation, share, len(z), mean_s, max_same_share)
+    failures = _implausible(separation, share, len(z), max_same_share)
+    vetoed = mean_s < 0.0
+    if vetoed and (scorer_veto or failures):
+        failures.append(_VETO)
     if failures:
+        alone = failures == [_VETO] and separation >= OVERRULE_SEPARATION
+        unless = ", unless the clusters of the hoard's own mixture stand out (coindie cluster --auto)"
         reason = (
             f"the scores of {len(z)} {what} do not separate into same-die and different-die populations "
             f"({'; '.join(failures)}; upper component log-odds {mean_s:.2f} ± {sd_s:.2f} against "
-            f"{mean_d:.2f} ± {sd_d:.2f}){refused_note}: the scorer's own probabilities are kept; check the "
-            "scans' quality and the registrations"
+            f"{mean_d:.2f} ± {sd_d:.2f}){refused_note}: the scorer's own probabilities are kept"
+            + (unless if alone else "")
+            + "; check the scans' quality and the registrations"
         )
-        return _not_separated(z, refused, separation, reason, share, (mean_s, sd_s), (mean_d, sd_d))
+        return _not_separated(
+            z, refused, separation, reason, share, (mean_s, sd_s), (mean_d, sd_d), vetoed=alone
+        )
     message = (
         f"{len(z)} {what} scored: {share:.1%} in the same-die population (log-odds {mean_s:.2f} ± {sd_s:.2f} "
         f"against {mean_d:.2f} ± {sd_d:.2f}, Ashman's D {separation:.2f}){refused_note}"
     )
+    if vetoed:
+        message += " (kept although the scorer judges its typical same-die pair different-die)"
     return HoardCalibration(
         len(z), refused, share, (float(mean_s), float(sd_s)), (float(mean_d), float(sd_d)), separation, True,
         message,
@@ -183,14 +214,16 @@ def calibrated_probabilities(
     prior: Mapping[str, tuple[float, float]] | None = None,
     what: str = "same-side pairs",
     max_same_share: float = MAX_SAME_SHARE,
+    scorer_veto: bool = True,
 ) -> tuple[FloatArray, HoardCalibration]:
     """The hoard-calibrated probability of each pair of one side (0 where the registration was refused,
     ``valid`` False), and the calibration."""
     p = np.asarray(probabilities, dtype=np.float64)
     ok = np.asarray(valid, dtype=bool)
     calibration = calibrate_hoard(
-        p[ok], refused=int((~ok).sum()), prior=prior, what=what, max_same_share=max_same_share
-    )
+        p[ok], refused=int((~ok).sum()), prior=prior, what=what, max_same_share=max_same_share,
+        scorer_veto=scorer_veto,
+    )  # fmt: skip
     out = np.zeros_like(p)
     out[ok] = calibration.probability(log_odds(p[ok]))
     return out, calibration
@@ -206,6 +239,7 @@ def calibrated_side(
     prior: Mapping[str, tuple[float, float]] | None = None,
     what: str = "same-side pairs",
     max_same_share: float = MAX_SAME_SHARE,
+    scorer_veto: bool = True,
 ) -> tuple[FloatArray, HoardCalibration]:
     """:func:`calibrated_probabilities` of one side's pairs, named by their faces (``sources``,
     ``targets``); with ``across`` (a first clustering, face id -> label), each face's pull on its scores,
@@ -216,17 +250,21 @@ def calibrated_side(
     p = np.asarray(probabilities, dtype=np.float64)
     if across is not None and len(p):
         p = without_face_effects_across(p, valid, sources, targets, across)
-    return calibrated_probabilities(p, valid, prior=prior, what=what, max_same_share=max_same_share)
+    return calibrated_probabilities(
+        p, valid, prior=prior, what=what, max_same_share=max_same_share, scorer_veto=scorer_veto
+    )
 
 
-def _implausible(
-    separation: float, share: float, n: int, mean_same: float, max_same_share: float
-) -> list[str]:
-    """Why a fitted mixture is not a same-die / different-die split ([] when it is): its components
-    overlap; its upper one holds less than one pair, or most pairs (most pairs of a hoard are of
-    different dies); or its typical member is judged different-die by the scorer itself (log-odds < 0:
-    then the split is between kinds of different-die pairs, such as other designs and other dies of
-    one design)."""
+#: The scorer's veto on a mixture (:func:`calibrate_hoard`): its typical member is judged different-die by
+#: the scorer itself (log-odds < 0: on the scorer's own kind of scans, the split is then between kinds of
+#: different-die pairs, such as other designs and other dies of one design).
+_VETO = "its typical pair is judged different-die by the scorer (mean log-odds < 0)"
+
+
+def _implausible(separation: float, share: float, n: int, max_same_share: float) -> list[str]:
+    """Why a fitted mixture is not a same-die / different-die split ([] when it is), the scorer's veto
+    aside: its components overlap; its upper one holds less than one pair, or most pairs (most pairs of
+    a hoard are of different dies)."""
     failures = []
     if separation < MIN_SEPARATION:
         failures.append(f"Ashman's D {separation:.2f} < {MIN_SEPARATION:g}")
@@ -234,8 +272,6 @@ def _implausible(
         failures.append(f"upper component {share:.1%} of the pairs, less than one pair")
     if share > max_same_share:
         failures.append(f"upper component {share:.1%} of the pairs, more than {max_same_share:.0%}")
-    if mean_same < 0.0:
-        failures.append("its typical pair is judged different-die by the scorer (mean log-odds < 0)")
     return failures
 
 
@@ -291,10 +327,12 @@ def _not_separated(
     share: float = float("nan"),
     same: tuple[float, float] = (float("nan"), float("nan")),
     different: tuple[float, float] = (float("nan"), float("nan")),
+    *,
+    vetoed: bool = False,
 ) -> HoardCalibration:
     return HoardCalibration(
         len(z), refused, share, (float(same[0]), float(same[1])), (float(different[0]), float(different[1])),
-        separation, False, message,
+        separation, False, message, vetoed,
     )  # fmt: skip
 
 
