@@ -21,7 +21,10 @@ imports nothing of coindie (the PLYs and ``labels.csv`` are written here) and ma
 Hoards of 40 coins (80 faces), 12 dies a side, as the issue's held-out hoards. The kinds follow the issue's
 table: ``ordinary``, ``hard`` (worn, bent, broken, crusted; one type a side, dies 0.25 mm apart),
 ``coarse`` (0.15 mm spacing, 0.03 mm noise), ``mixed`` (two scanners in one hoard), ``flat`` (flat,
-uniform, centred flans). ``--evaluate`` runs the shipped defaults on each hoard as a user would and prints
+uniform, centred flans). Beside the PLYs and ``labels.csv``: ``poses.json`` (each face's T_scan_die: for two
+faces of one die, T_b_a = T_scan_die[b] @ inv(T_scan_die[a])) and ``faces.json`` (what each face was
+drawn with: flan, share of the die on it, off-centre share, double strike, weak zone, wear, corrosion,
+cupping, bend, scanner). ``--evaluate`` runs the shipped defaults on each hoard as a user would and prints
 its evaluation (FMI, ARI, clusters against dies). No pass/fail: a measurement (BENCHMARK.md, "An independent
 generator").
 """
@@ -258,9 +261,11 @@ def smooth_noise(rng: np.random.Generator, n: int, sigma_px: float) -> Array:
     return (field - field.mean()) / max(field.std(), 1e-12)
 
 
-def strike(die: Array, die_radius: float, kind: Kind, rng: np.random.Generator) -> tuple[Array, Array, Array]:
+def strike(
+    die: Array, die_radius: float, kind: Kind, rng: np.random.Generator, record: dict[str, object]
+) -> tuple[Array, Array, Array]:
     """The struck face's height field (mm), its flan mask, on the coin's own grid, and T_coin_die (the
-    die's frame in the coin's, in the plane)."""
+    die's frame in the coin's, in the plane); what was drawn goes into ``record``."""
     n = die.shape[0]
     half = (n - 1) / 2.0
     y, x = (np.mgrid[0:n, 0:n] - half) * RENDER_MM
@@ -271,7 +276,8 @@ def strike(die: Array, die_radius: float, kind: Kind, rng: np.random.Generator) 
         for k in range(2, 7)
     )
     flan = np.hypot(x, y) <= radius * (1.0 + wobble)
-    if rng.random() < kind.broken:
+    record["broken"] = bool(rng.random() < kind.broken)
+    if record["broken"]:
         direction = rng.uniform(0, 2 * np.pi)
         flan &= x * np.cos(direction) + y * np.sin(direction) < rng.uniform(0.45, 0.8) * radius
     # the die's position on the flan
@@ -280,6 +286,11 @@ def strike(die: Array, die_radius: float, kind: Kind, rng: np.random.Generator) 
         rng.uniform(0, kind.off_centre) * 2 * die_radius * np.array([np.cos(direction), np.sin(direction)])
     )
     turn = rng.uniform(0, 2 * np.pi)
+    record["flan_radius_mm"] = float(radius)
+    record["off_centre"] = float(np.hypot(*offset) / (2 * die_radius))  # share of the die's diameter
+    # the share of the die's face that lands on the flan
+    on_die = np.hypot(x - offset[0], y - offset[1]) <= die_radius
+    record["die_on_flan"] = float((on_die & flan).sum() / max(on_die.sum(), 1))
 
     def struck(shift: Array, angle: float) -> Array:
         c, s = np.cos(angle), np.sin(angle)
@@ -287,7 +298,8 @@ def strike(die: Array, die_radius: float, kind: Kind, rng: np.random.Generator) 
         return ndimage.map_coordinates(die, [v / RENDER_MM + half, u / RENDER_MM + half], order=1, cval=0.0)
 
     relief = struck(offset, turn)
-    if rng.random() < kind.double:
+    record["double"] = bool(rng.random() < kind.double)
+    if record["double"]:
         second = struck(
             offset + rng.uniform(0.3, 1.0) * rng.choice([-1, 1], 2), turn + np.radians(rng.uniform(-5, 5))
         )
@@ -297,15 +309,18 @@ def strike(die: Array, die_radius: float, kind: Kind, rng: np.random.Generator) 
         field = smooth_noise(rng, n, 4.0 / RENDER_MM)
         weak = field > np.quantile(field, 1.0 - share)
         depth = rng.uniform(0.4, 0.8)
+        record["weak_share"], record["weak_depth"] = float(share), float(depth)
         relief *= 1.0 - depth * ndimage.gaussian_filter(weak.astype(np.float64), 0.8 / RENDER_MM)
     if kind.wear > 0:
         loss = rng.uniform(0, kind.wear)
+        record["wear"] = float(loss)
         local = ndimage.gaussian_filter(relief, 1.2 / RENDER_MM)
         high = np.maximum(relief - local, 0.0)
         relief = relief - loss * high * (relief / max(relief.max(), 1e-9))
         relief = ndimage.gaussian_filter(relief, 0.05 / RENDER_MM * (0.5 + loss))
     if kind.corrosion > 0:
         share = rng.uniform(0, kind.corrosion)
+        record["corrosion_share"] = float(share)
         field = smooth_noise(rng, n, 0.6 / RENDER_MM)
         crust = field > np.quantile(field, 1.0 - share / 2)
         relief += rng.uniform(0.05, 0.2) * ndimage.gaussian_filter(crust.astype(np.float64), 0.1 / RENDER_MM)
@@ -317,7 +332,9 @@ def strike(die: Array, die_radius: float, kind: Kind, rng: np.random.Generator) 
     # the flan's own shape
     cup = rng.uniform(-1, 1) * kind.cupping / 100.0  # mm at 10 mm: c * 100
     shape = cup * (x**2 + y**2)
-    if kind.bend > 0 and rng.random() < 0.5:
+    record["cupping_mm_at_10"] = float(cup * 100.0)
+    record["bent"] = bool(kind.bend > 0 and rng.random() < 0.5)
+    if record["bent"]:
         direction = rng.uniform(0, 2 * np.pi)
         u = x * np.cos(direction) + y * np.sin(direction)
         start = rng.uniform(0.0, 0.5) * radius
@@ -414,7 +431,7 @@ def make_hoard(folder: Path, name: str, seed: int, coins: int = 40, dies: int = 
     dies = min(dies, coins)
     rng = np.random.default_rng(seed)
     folder.mkdir(parents=True, exist_ok=True)
-    labels, poses = [], {}
+    labels, poses, faces = [], {}, {}
     for side in ("D", "R"):
         types = [new_type(rng) for _ in range(kind.types)]
         die_types = [types[k % len(types)] for k in range(dies)]
@@ -425,8 +442,10 @@ def make_hoard(folder: Path, name: str, seed: int, coins: int = 40, dies: int = 
         rng.shuffle(which)
         for coin, die in enumerate(which, start=1):
             face = f"L{coin:04d}{side}"
-            height, flan, T_coin_die = strike(die_reliefs[die], die_types[die].radius, kind, rng)
+            faces[face] = {}
+            height, flan, T_coin_die = strike(die_reliefs[die], die_types[die].radius, kind, rng, faces[face])
             scanner = kind.scanners[int(rng.integers(len(kind.scanners)))]
+            faces[face]["scanner"] = kind.scanners.index(scanner)
             points, normals, T_scan_coin = scan(height, flan, scanner, rng)
             poses[face] = (T_scan_coin @ T_coin_die).tolist()
             write_ply(folder / f"{face}.ply", points, normals)
@@ -438,6 +457,8 @@ def make_hoard(folder: Path, name: str, seed: int, coins: int = 40, dies: int = 
         writer.writerows(sorted(labels))
     # T_scan_die per face: for two faces of one die, T_b_a = T_scan_die[b] @ inv(T_scan_die[a])
     (folder / "poses.json").write_text(json.dumps(poses, indent=1, sort_keys=True))
+    # what each face was drawn with (flan, strike, wear, scanner), to tell which coins a method fails on
+    (folder / "faces.json").write_text(json.dumps(faces, indent=1, sort_keys=True))
 
 
 def evaluate(folder: Path, coindie: str) -> dict[str, object]:
