@@ -82,24 +82,15 @@ ORDINARY = Kind(
     types=2, die_jitter=0.5, off_centre=0.12, flan_spread=0.06, outline_wobble=0.02, broken=0.0,
     cupping=0.15, bend=0.0, weak=0.2, double=0.0, wear=0.3, corrosion=0.05, scanners=(GOOD,),
 )  # fmt: skip
+# worn, bent, broken, crusted, double-struck, off centre; one type a side, dies 0.25 mm apart
+HARD = Kind(
+    types=1, die_jitter=0.25, off_centre=0.3, flan_spread=0.1, outline_wobble=0.04, broken=0.25,
+    cupping=0.3, bend=0.3, weak=0.5, double=0.2, wear=0.7, corrosion=0.3,
+    scanners=(Scanner(spacing=0.05, noise=0.012, smoothed=False, estimated_normals=True, holes=4),),
+)  # fmt: skip
 KINDS = {
     "ordinary": ORDINARY,
-    # worn, bent, broken, crusted, double-struck, off centre; one type a side, dies 0.25 mm apart
-    "hard": Kind(
-        types=1,
-        die_jitter=0.25,
-        off_centre=0.3,
-        flan_spread=0.1,
-        outline_wobble=0.04,
-        broken=0.25,
-        cupping=0.3,
-        bend=0.3,
-        weak=0.5,
-        double=0.2,
-        wear=0.7,
-        corrosion=0.3,
-        scanners=(Scanner(spacing=0.05, noise=0.012, smoothed=False, estimated_normals=True, holes=4),),
-    ),  # fmt: skip
+    "hard": HARD,
     "coarse": replace(
         ORDINARY,
         scanners=(Scanner(spacing=0.15, noise=0.03, smoothed=False, estimated_normals=True, holes=2),),
@@ -489,12 +480,22 @@ def main() -> None:
     parser.add_argument("--evaluate", action="store_true")
     parser.add_argument("--coindie", default=str(Path(sys.executable).with_name("coindie")))
     args = parser.parse_args()
-    for name in args.kinds.split(","):
+    kinds = args.kinds.split(",")
+    unknown = [name for name in kinds if name not in KINDS]
+    if unknown:
+        parser.error(f"--kinds: unknown {', '.join(unknown)} (known: {', '.join(KINDS)})")
+    if args.coins < 2:
+        parser.error(f"--coins must be at least 2 (a hoard needs pairs). Got {args.coins}.")
+    for name in kinds:
         folder = args.out / f"{name}-{args.seed}"
         if not (folder / "labels.csv").exists():
             make_hoard(folder, name, args.seed * 100 + list(KINDS).index(name), coins=args.coins)
         if args.evaluate:
-            result = evaluate(folder, args.coindie)
+            try:
+                result = evaluate(folder, args.coindie)
+            except subprocess.CalledProcessError as failed:  # the other hoards still run
+                print(f"{name}: {' '.join(failed.cmd)} failed (exit {failed.returncode})", flush=True)
+                continue
             print(name, json.dumps(result), flush=True)
 
 

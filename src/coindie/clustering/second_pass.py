@@ -103,16 +103,12 @@ def cluster_twice(
     independent generator")."""
     graph = calibrated_graph(None)
     params = method_params(method, measure=FIRST_MEASURE)
-    choice = select_threshold_unsupervised(graph, method, **params)
-    first = cluster(graph, method, choice.threshold, **params)
-    clear = clusters_stand_out(graph, first.labels)
+    choice, first, clear = _first_pass(graph, method, params)
     if clear >= CLEAR_SILHOUETTE:
         return TwoPassResult(graph, choice, first, clear, False, params)
     if vetoed_mixture is not None:
         mixture = vetoed_mixture()
-        own = select_threshold_unsupervised(mixture, method, **params)
-        clusters = cluster(mixture, method, own.threshold, **params)
-        standing = clusters_stand_out(mixture, clusters.labels)
+        own, clusters, standing = _first_pass(mixture, method, params)
         if standing >= CLEAR_SILHOUETTE:
             return TwoPassResult(mixture, own, clusters, standing, False, params, overruled_scorer=True)
     merged = select_threshold_unsupervised(graph, method, criterion="modularity", **params)
@@ -122,3 +118,12 @@ def cluster_twice(
     return TwoPassResult(
         graph, choice, cluster(graph, method, choice.threshold, **params), clear, True, params
     )
+
+
+def _first_pass(
+    graph: ProbabilityGraph, method: str, params: dict[str, Any]
+) -> tuple[ThresholdChoice, Clustering, float]:
+    """A graph clustered at its cut of best silhouette, and how far those clusters stand out."""
+    choice = select_threshold_unsupervised(graph, method, **params)
+    clusters = cluster(graph, method, choice.threshold, **params)
+    return choice, clusters, clusters_stand_out(graph, clusters.labels)

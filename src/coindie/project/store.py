@@ -590,11 +590,11 @@ class Project:
             return graph, PAPER_THRESHOLD, "the paper's (too few faces to choose one)", {}
         if method != ConsensusLinkage.NAME:
             return graph, *self.auto_threshold(side, method, graph), {}
-        vetoed = self.calibration(side).vetoed
+        calibration = self.calibration(side)
         result = cluster_twice(
             lambda across: graph if across is None else self.probability_graph(side, across=across),
             method,
-            (lambda: self.probability_graph(side, scorer_veto=False)) if vetoed else None,
+            (lambda: self.probability_graph(side, scorer_veto=False)) if calibration.vetoed else None,
         )
         note = ""
         if result.second_pass:
@@ -604,7 +604,7 @@ class Project:
                 ", on the hoard's own score populations, which the scorer had judged different-die: their "
                 f"clusters stand out (silhouette {result.first_silhouette:.2f})"
             )
-        separates = self.mixture_threshold(side) is not None or result.overruled_scorer
+        separates = calibration.separates or result.overruled_scorer
         how = _consensus_how(result.choice, note, separates=separates)
         return result.graph, result.choice.threshold, how, result.params
 

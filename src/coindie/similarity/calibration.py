@@ -179,8 +179,8 @@ def calibrate_hoard(
         f"; {refused} of {total} ({refused / total:.0%}) refused by the registration" if refused else ""
     )
     failures = _implausible(separation, share, len(z), max_same_share)
-    vetoed = mean_s < 0.0
-    if vetoed and (scorer_veto or failures):
+    judged_different = mean_s < 0.0  # by the scorer itself: its veto
+    if judged_different and (scorer_veto or failures):
         failures.append(_VETO)
     if failures:
         alone = failures == [_VETO] and separation >= OVERRULE_SEPARATION
@@ -199,7 +199,7 @@ def calibrate_hoard(
         f"{len(z)} {what} scored: {share:.1%} in the same-die population (log-odds {mean_s:.2f} ± {sd_s:.2f} "
         f"against {mean_d:.2f} ± {sd_d:.2f}, Ashman's D {separation:.2f}){refused_note}"
     )
-    if vetoed:
+    if judged_different:
         message += " (kept although the scorer judges its typical same-die pair different-die)"
     return HoardCalibration(
         len(z), refused, share, (float(mean_s), float(sd_s)), (float(mean_d), float(sd_d)), separation, True,
