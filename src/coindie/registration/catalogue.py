@@ -23,7 +23,7 @@ from coindie.registration.learned.turns import TurnSearchRegistration
 from coindie.registration.patch_icp import PatchICP
 from coindie.registration.random_search import RandomSearch, RandomSearchICP
 from coindie.registration.ransac import RansacSolver
-from coindie.registration.relief import ReliefICP, ReliefRegistration, ReliefSearch
+from coindie.registration.relief import ReliefBlocks, ReliefICP, ReliefRegistration, ReliefSearch
 from coindie.registration.teaser import TeaserSolver
 
 register_method(
@@ -89,7 +89,8 @@ for _descriptor, _label in _LEARNED.items():
 
 register_method(
     "relief",
-    lambda relief, icp: ReliefRegistration(relief, icp),
-    parts=(ReliefSearch, ReliefICP),
-    summary="ours: canonical frames + relief images, FFT search of rotation and translation, then ICP",
+    lambda relief, icp, blocks: ReliefRegistration(relief, icp, blocks),
+    parts=(ReliefSearch, ReliefICP, ReliefBlocks),
+    summary="ours: canonical frames + relief images, FFT search of rotation and translation, ICP, then "
+    "block matching of the reliefs in the plane",
 )

@@ -75,6 +75,21 @@ def high_pass(values: FloatImage, mask: BoolImage, sigma_px: float) -> FloatImag
     return np.where(mask, values - low, 0.0)
 
 
+def footprint_detail(
+    values: FloatImage, pixel_mm: float, high_pass_mm: float, margin_mm: float
+) -> tuple[FloatImage, BoolImage, NDArray[np.int32]]:
+    """A centred height grid's (NaN where there is no surface) relief detail, high-passed inside its
+    footprint less ``margin_mm``; that footprint; and each pixel's taxicab distance to the outside (pixels).
+
+    One distance transform gives the footprint less the margin and any core less more (the planar search's
+    window) at once; as binary erosions they cost ten times more."""
+    footprint = np.isfinite(values)
+    margin_px = max(int(round(margin_mm / pixel_mm)), 0)
+    inside = ndimage.distance_transform_cdt(np.pad(footprint, 1), metric="taxicab")[1:-1, 1:-1]
+    mask = inside > margin_px
+    return high_pass(np.nan_to_num(values), mask, high_pass_mm / pixel_mm), mask, inside
+
+
 def polar_log_spectrum(image: FloatImage, n_angles: int = 360, r_min_px: int = 3) -> FloatImage:
     """log(1 + |FFT|) of a square image resampled on (radius, angle in [0, pi)), each radius centred.
 
@@ -280,13 +295,8 @@ class ReliefImage:
         n_angles: int = 360,
     ) -> ReliefImage:
         """From a centred square height grid (NaN where there is no surface)."""
-        footprint = np.isfinite(values)
+        detail, mask, inside = footprint_detail(values, pixel_mm, high_pass_mm, margin_mm)
         margin_px = max(int(round(margin_mm / pixel_mm)), 0)
-        # One distance transform gives the footprint less the margin and the window's core (less twice
-        # the margin) at once; as binary erosions they cost ten times more.
-        inside = ndimage.distance_transform_cdt(np.pad(footprint, 1), metric="taxicab")[1:-1, 1:-1]
-        mask = inside > margin_px
-        detail = high_pass(np.nan_to_num(values), mask, high_pass_mm / pixel_mm)
         window = ndimage.gaussian_filter((inside > 2 * margin_px).astype(np.float64), max(margin_px, 1))
         return cls(detail, mask, pixel_mm, polar_log_spectrum(detail * window, n_angles=n_angles))
 
