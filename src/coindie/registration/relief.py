@@ -39,7 +39,7 @@ from coindie.registration.base import Estimate, Timer
 from coindie.registration.clouds import Cloud
 from coindie.registration.icp import MIN_CORRESPONDENCES, IcpOutcome, point_to_plane_icp
 from coindie.registration.projective import ProjectedCloud
-from coindie.registration.relief_blocks import FineRelief, refine_planar
+from coindie.registration.relief_blocks import REACH_MM, FineRelief, refine_planar
 from coindie.registration.relief_search import PlanarAlignment, ReliefImage, align_reliefs, pose_score
 from coindie.scan import Scan
 from coindie.transforms import transform_points
@@ -47,8 +47,6 @@ from coindie.transforms import transform_points
 #: Points of the relief whose normal is within this angle of the face's up direction (the edge wall and
 #: steep flaws are left out of the ICP).
 _RELIEF_MAX_NORMAL_ANGLE_DEG = 60.0
-#: A turn is weighed by how far it moves a point this far from the centre (mm): a coin's typical radius.
-_REACH_MM = 10.0
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -335,11 +333,7 @@ class ReliefRegistration:
         tilt and height stay the ICP's. Kept only where the reliefs' windows agree better than before."""
         if source.fine is None or target.fine is None:
             return T_target_source, "block matching off"
-        T_canonical = (
-            target.frame.T_canonical_scan @ T_target_source @ np.linalg.inv(source.frame.T_canonical_scan)
-        )
-        angle = float(np.arctan2(T_canonical[1, 0], T_canonical[0, 0]))
-        shift = (float(T_canonical[0, 3]), float(T_canonical[1, 3]))
+        angle, shift = _planar_of(T_target_source, source.frame, target.frame)
         blocks = self.blocks
         refined = refine_planar(
             source.fine, target.fine, angle, shift,
@@ -354,7 +348,7 @@ class ReliefRegistration:
         # the correction in the target's canonical plane: new planar pose after the inverse of the old one
         turn = refined.angle_rad - angle
         moved = (
-            np.hypot(refined.shift_mm[0] - shift[0], refined.shift_mm[1] - shift[1]) + abs(turn) * _REACH_MM
+            np.hypot(refined.shift_mm[0] - shift[0], refined.shift_mm[1] - shift[1]) + abs(turn) * REACH_MM
         )
         if moved < blocks.pixel:
             # Within a pixel the ICP's thousands of points see further than the windows' correlations:
@@ -384,9 +378,9 @@ class ReliefRegistration:
     @staticmethod
     def _agreement(T_target_source: FloatArray, source: PreparedFace, target: PreparedFace) -> float:
         """The relief images' masked NCC at a 3-D pose, through both canonical frames (tilt ignored)."""
-        T = target.frame.T_canonical_scan @ T_target_source @ np.linalg.inv(source.frame.T_canonical_scan)
-        angle = float(np.arctan2(T[1, 0], T[0, 0]))
-        return pose_score(source.image, target.image, angle, (float(T[0, 3]), float(T[1, 3])))
+        return pose_score(
+            source.image, target.image, *_planar_of(T_target_source, source.frame, target.frame)
+        )
 
     def prepare(self, cloud: Cloud) -> PreparedFace:
         """Steps 1–3 for one face, from the cache when this exact cloud was seen."""
@@ -437,6 +431,15 @@ def _centred_grid(relief, pixel: float, field_size: float) -> FloatArray:  # noq
     rows, cols = relief.mm_to_pixel(x, y)
     values = np.asarray(relief.values, dtype=np.float64)
     return ndimage.map_coordinates(values, [rows, cols], order=1, mode="constant", cval=np.nan)
+
+
+def _planar_of(
+    T_target_source: FloatArray, source: CanonicalFrame, target: CanonicalFrame
+) -> tuple[float, tuple[float, float]]:
+    """The turn about z (rad) and the shift in the plane (mm) of a 3-D pose seen from source canonical to
+    target canonical coordinates, tilt ignored: the inverse of :func:`_lift` for a planar pose."""
+    T = target.T_canonical_scan @ T_target_source @ np.linalg.inv(source.T_canonical_scan)
+    return float(np.arctan2(T[1, 0], T[0, 0])), (float(T[0, 3]), float(T[1, 3]))
 
 
 def _lift(T_planar: FloatArray, source: CanonicalFrame, target: CanonicalFrame) -> FloatArray:

@@ -36,19 +36,19 @@ BoolImage = NDArray[np.bool_]
 
 #: Windows whose target footprint covers less than this share are left out.
 _MIN_COVER = 0.6
-#: A window's correlation at any shift needs this share of it seen by both faces.
-_MIN_OVERLAP = 0.5
 #: Windows a rigid fit needs at the least.
 _MIN_WINDOWS = 6
+#: A turn is weighed by how far it moves a point this far from the centre (mm): a coin's typical radius.
+REACH_MM = 10.0
 
 
 @dataclass(frozen=True)
 class Level:
-    """One step of a face's pyramid: band-passed detail and footprint, ``step`` full pixels a pixel."""
+    """One step of a face's pyramid (keyed by its step: full pixels a pixel): band-passed detail and
+    footprint."""
 
     detail: FloatImage
     mask: BoolImage
-    step: int
     start: tuple[int, int]  # (row, col) of the footprint's box in the level's image
     stop: tuple[int, int]
 
@@ -84,7 +84,7 @@ class FineRelief:
             )
             level_mask = mask[::step, ::step]
             level_detail = np.where(level_mask, smooth[::step, ::step], 0.0).astype(np.float32)
-            levels[step] = Level(level_detail, level_mask, step, *_box(level_mask))
+            levels[step] = Level(level_detail, level_mask, *_box(level_mask))
         return cls(levels, pixel_mm, values.shape[0])
 
 
@@ -107,9 +107,8 @@ class BlockRefinement:
 @dataclass(frozen=True)
 class _Windows:
     centres: NDArray[np.float64]  # (n, 2) (row, col) in the level's full image
-    shifts: NDArray[
-        np.float64
-    ]  # (n, 2) (rows, cols): the moving image's content at centre + shift belongs at centre
+    # (n, 2) (rows, cols): the moving image's content at centre + shift belongs at centre
+    shifts: NDArray[np.float64]
     peaks: NDArray[np.float64]  # best correlation
     at_zero: NDArray[np.float64]  # correlation without shift
     inside: NDArray[np.bool_]  # best shift inside the reach (not on its border)
@@ -140,8 +139,8 @@ def refine_planar(
             if step == finest:
                 consistent, matched = explained, len(windows.peaks)
             R, t = R_update @ R, R_update @ t + t_update
-            moved = np.hypot(*t_update) + abs(np.arctan2(R_update[1, 0], R_update[0, 0])) * 10.0
-            if moved < 0.25 * step * target.pixel_mm:  # a quarter of a pixel at 10 mm from the centre
+            moved = np.hypot(*t_update) + abs(np.arctan2(R_update[1, 0], R_update[0, 0])) * REACH_MM
+            if moved < 0.25 * step * target.pixel_mm:  # a quarter of a pixel at REACH_MM from the centre
                 break
     after = _match(source, target, finest, R, t, window_mm, 0)
     return BlockRefinement(
@@ -318,9 +317,8 @@ def _fit(
         residual = np.linalg.norm(came_from @ R.T + t - at, axis=1)
         scale = max(1.4826 * float(np.median(residual[weight > 0])), 0.5 * pixel)
         w = weight / (1.0 + (residual / (2.0 * scale)) ** 2)
-    consistent = float(
-        np.mean((residual <= pixel) & windows.inside)
-    )  # a peak on the reach's border is no match
+    # a peak on the reach's border is no match
+    consistent = float(np.mean((residual <= pixel) & windows.inside))
     return R, t, consistent
 
 
