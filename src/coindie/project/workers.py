@@ -149,8 +149,14 @@ class SampledRegistrar:
         self.grid_mm = grid_mm
         self._coarse: weakref.WeakKeyDictionary[Scan, Scan] = weakref.WeakKeyDictionary()
 
-    def register(self, source: Scan, target: Scan) -> Any:
-        return self.inner.register(self.coarse(source), self.coarse(target))
+    def register(self, source: Scan, target: Scan, *, T_init: Any = None) -> Any:
+        if T_init is None:
+            return self.inner.register(self.coarse(source), self.coarse(target))
+        return self.inner.register(self.coarse(source), self.coarse(target), T_init=T_init)
+
+    @property
+    def refines_from_pose(self) -> bool:
+        return bool(getattr(self.inner, "refines_from_pose", False))
 
     def coarse(self, scan: Scan) -> Scan:
         from coindie.preprocess import grid_sample

@@ -177,8 +177,17 @@ class Pipeline:
         key = content_key(scan.points, scan.normals if scan.normals is not None else np.empty(0))
         return self._clouds.get(key, lambda: Cloud.canonical(scan, key))
 
-    def register(self, source: Scan | ArrayLike, target: Scan | ArrayLike) -> RegistrationResult:
-        """Register ``source`` onto ``target`` (Scans, or (N, 3) arrays in mm).
+    @property
+    def refines_from_pose(self) -> bool:
+        """Whether ``register`` can start from a given pose (the estimator has ``estimate_from``)."""
+        return hasattr(self.estimator, "estimate_from")
+
+    def register(
+        self, source: Scan | ArrayLike, target: Scan | ArrayLike, *, T_init: FloatArray | None = None
+    ) -> RegistrationResult:
+        """Register ``source`` onto ``target`` (Scans, or (N, 3) arrays in mm); from the pose ``T_init``
+        (T_target_source) instead of the method's own global step when it is given, which only methods
+        that :attr:`refines_from_pose` accept.
 
         Raises:
             InvalidScanError: a cloud is empty, has NaN coordinates, is not (N, 3) or has too few points.
@@ -187,7 +196,14 @@ class Pipeline:
         with timer("prepare"):
             source_cloud = self._cloud(as_scan(source, "source"))
             target_cloud = self._cloud(as_scan(target, "target"))
-        estimate = self.estimator.estimate(source_cloud, target_cloud, timer)
+        if T_init is None:
+            estimate = self.estimator.estimate(source_cloud, target_cloud, timer)
+        elif self.refines_from_pose:
+            estimate = self.estimator.estimate_from(  # type: ignore[attr-defined]
+                source_cloud, target_cloud, np.asarray(T_init, dtype=np.float64), timer
+            )
+        else:
+            raise ParameterError(f"Method {self.name!r} cannot start from a given pose.")
         with timer("score"):
             T = np.eye(4) if estimate.T_target_source is None else estimate.T_target_source
             scored = source_cloud.points[:: -(-len(source_cloud.points) // self.check.max_points)]

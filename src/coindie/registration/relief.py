@@ -275,6 +275,29 @@ class ReliefRegistration:
             prepared_source, prepared_target = self.prepare(source), self.prepare(target)
         with timer("planar search"):
             planar, T_init = self.planar_pose(prepared_source, prepared_target)
+        found = f"relief correlation {planar.score:.3f} at {np.degrees(planar.angle_rad):.2f}°"
+        return self._refined(source, target, prepared_source, prepared_target, T_init, found, timer)
+
+    def estimate_from(self, source: Cloud, target: Cloud, T_init: FloatArray, timer: Timer) -> Estimate:
+        """Steps 6-7 from a given pose instead of the planar search's (a pose composed through a third
+        face, :mod:`coindie.project.relay`): the ICP, its pose check and the block matching."""
+        with timer("relief images"):
+            prepared_source, prepared_target = self.prepare(source), self.prepare(target)
+        angle, _ = _planar_of(T_init, prepared_source.frame, prepared_target.frame)
+        given = f"from a given pose at {np.degrees(angle):.2f}°"
+        return self._refined(source, target, prepared_source, prepared_target, T_init, given, timer)
+
+    def _refined(
+        self,
+        source: Cloud,
+        target: Cloud,
+        prepared_source: PreparedFace,
+        prepared_target: PreparedFace,
+        T_init: FloatArray,
+        found: str,
+        timer: Timer,
+    ) -> Estimate:
+        """Steps 6-7 from ``T_init``; ``found`` says where the pose came from (the result's first note)."""
         with timer("pose check"):
             start = self._agreement(T_init, prepared_source, prepared_target)
         refined, first_agreement = True, start  # set by the early check where the ICP asks it
@@ -299,7 +322,7 @@ class ReliefRegistration:
             )
             n_points = max(len(sample), len(final))  # the source points a stage paired at most
         notes = (
-            f"relief correlation {planar.score:.3f} at {np.degrees(planar.angle_rad):.2f}°",
+            found,
             f"ICP: {outcome.iterations} iterations, converged={outcome.converged}"
             + ("" if refined else ", last stage not run"),
         )

@@ -107,6 +107,8 @@ def score_pair(
     settings: HistogramSettings | None = None,
     classifier: Scorer | None = None,
     faces: FaceCache | None = None,
+    *,
+    T_init: FloatArray | None = None,
 ) -> PairScore:
     """Register ``source`` onto ``target``, measure the aligned pair (the paper's distance histogram and
     the relief features), and estimate the probability that both faces were struck by the same die.
@@ -114,11 +116,15 @@ def score_pair(
     Defaults: the ``relief`` registration method, the classifier's own histogram settings (those it was
     trained with; the paper's when neither is given), the shipped ``relief`` scorer, the histogram module's
     cache of sampled faces (``faces``: a caller scoring many pairs passes one sized for its faces).
+    ``T_init`` (T_target_source) starts the registration from a given pose instead of the method's global
+    step (a pose composed through a third face); only methods that ``refines_from_pose`` accept it.
     """
     classifier = classifier if classifier is not None else _default_classifier()
     settings = settings if settings is not None else classifier.settings
     features = getattr(classifier, "features", None)
-    return measure_pair(source, target, registrar, settings, features, faces).classified(classifier)
+    return measure_pair(source, target, registrar, settings, features, faces, T_init=T_init).classified(
+        classifier
+    )
 
 
 def measure_pair(
@@ -128,6 +134,8 @@ def measure_pair(
     settings: HistogramSettings | None = None,
     features: ReliefFeatureSettings | None = None,
     faces: FaceCache | None = None,
+    *,
+    T_init: FloatArray | None = None,
 ) -> PairScore:
     """:func:`score_pair` without the classifier (``probability`` is NaN for a valid registration, 0 for
     an invalid one): what a batch stores, so that either scorer can be trained on, or applied to, the
@@ -137,7 +145,11 @@ def measure_pair(
     start = time.perf_counter()
     registrar = registrar if registrar is not None else get_method("relief")
     settings = settings if settings is not None else HistogramSettings()
-    result = registrar.register(source, target)
+    result = (
+        registrar.register(source, target)
+        if T_init is None
+        else registrar.register(source, target, T_init=T_init)
+    )
     timings = {"register": time.perf_counter() - start}
     ids = {"source_id": str(source.id), "target_id": str(target.id), "method": result.method}
     if not result.valid:
