@@ -133,10 +133,11 @@ def row_project(folder: Path, hoard: Path, workers: int) -> Any:
     from coindie.project.run import RunConfig, run_project
 
     project = open_project(folder) if (folder / "project.sqlite").exists() else init_project(folder, hoard)[0]
-    # Every pair stores both scorers' inputs (relief features and histogram); the run's own probabilities
-    # are the paper model's, whose parameters do not change when the relief model is retrained, so a
-    # project is scored once and each scorer applied to what it stored (as coindie run would apply it).
-    config = RunConfig(mode="exhaustive", workers=workers, scorer="paper")
+    # Every pair stores both scorers' inputs (relief features and histogram), so a project is scored once
+    # and each scorer applied to what it stored (as coindie run would apply it). The run is the shipped
+    # default's, relays included (coindie.project.relay): a relay keeps the pose the default scorer scores
+    # higher, and the paper's scorer is measured on those same poses.
+    config = RunConfig(mode="exhaustive", workers=workers)
     run_project(project, config, echo=lambda line: None)
     return project
 

@@ -8,6 +8,7 @@ from typing import Annotated
 import typer
 
 from coindie.cli.common import Dask, exits_cleanly
+from coindie.project.relay import DEFAULT_NEIGHBOURS, DEFAULT_ROUNDS
 
 #: The commands of this module; coindie.cli.app registers them.
 commands = typer.Typer()
@@ -57,6 +58,11 @@ def run(
     ] = "relief",
     batch_faces: Annotated[int, typer.Option(help="Faces per side of a batch's tile.")] = 16,
     retry_failed: Annotated[bool, typer.Option(help="Score again the pairs that failed before.")] = False,
+    relay_neighbours: Annotated[
+        int,
+        typer.Option(help="Register pairs again through each face's N best partners (0: no relays)."),
+    ] = DEFAULT_NEIGHBOURS,
+    relay_rounds: Annotated[int, typer.Option(help="Rounds of relays.")] = DEFAULT_ROUNDS,
     max_minutes: Annotated[
         float | None, typer.Option(help="Stop scoring after this long (resume later with coindie run).")
     ] = None,
@@ -83,6 +89,8 @@ def run(
         classifier=str(classifier) if classifier else None,
         scorer=scorer,
         retry_failed=retry_failed,
+        relay_neighbours=relay_neighbours,
+        relay_rounds=relay_rounds,
         plan_only=plan_only,
         max_seconds=None if max_minutes is None else 60.0 * max_minutes,
     )

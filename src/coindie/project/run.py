@@ -13,6 +13,10 @@
    workers (:func:`coindie.project.workers.score_batch`). Each batch's results are committed in one
    transaction: killing the run at any moment loses at most the batches in flight, and no committed pair
    is ever computed again.
+4. **Relays** (:mod:`coindie.project.relay`): the pairs that the chains through a third face score higher
+   than their own registration are registered again from the pose composed through it, in a few rounds;
+   a pair keeps the result only where it scores higher. Committed as the pairs are, each attempt recorded
+   (the ``relays`` table): a rerun tries only new chains.
 """
 
 from __future__ import annotations
@@ -35,13 +39,16 @@ from coindie import __version__
 from coindie.errors import CoinDieError
 from coindie.params import Configurable, param
 from coindie.project.backends import Backend, WorkerLost, make_backend
+from coindie.project.relay import DEFAULT_NEIGHBOURS, DEFAULT_ROUNDS, Relay, plan_relays
 from coindie.project.store import Project, ProjectError
 from coindie.project.workers import (
     PAIR_FUNCTION_VERSION,
     FaceTask,
     PairBatch,
+    RelayBatch,
     face_params_hash,
     prepare_face,
+    relay_batch,
     score_batch,
 )
 from coindie.similarity.scorers import SCORERS
@@ -81,6 +88,10 @@ class RunConfig(Configurable):
     )
     retry_failed: bool = param(False, doc="score again the pairs that failed")
     plan_only: bool = param(False, doc="prepare the faces and plan the pairs, score none")
+    relay_neighbours: int = param(
+        DEFAULT_NEIGHBOURS, doc="partners per face the relays go through (0: no relays)", low=0
+    )
+    relay_rounds: int = param(DEFAULT_ROUNDS, doc="rounds of relays", low=0)
     max_seconds: float | None = param(
         None, float, doc="stop scoring (cleanly, resumable) after this long", unit="s", low=0.0, optional=True
     )
@@ -105,6 +116,8 @@ class RunReport:
     pairs_done: int = 0
     pairs_failed: int = 0
     batches_lost: int = 0
+    relays_tried: int = 0
+    relays_kept: int = 0
     stopped_early: bool = False
     seconds: float = 0.0
     stage_seconds: dict[str, float] = field(default_factory=dict)
@@ -140,8 +153,12 @@ def run_project(
         with _stage(report, "plan"):
             report.plans = _plan(project, config, scorer.params_hash, run_id, echo)
         if not config.plan_only:
+            scoring = _Scoring(project, config, scorer, backend, report, progress, echo, time.perf_counter())
             with _stage(report, "pairs"):
-                _score_pairs(project, config, scorer, backend, report, progress)
+                _score_pairs(scoring)
+            if not report.stopped_early:
+                with _stage(report, "relays"):
+                    _relay_pairs(scoring)
         status = "finished"
     except KeyboardInterrupt:
         status, message = "interrupted", "interrupted by the user"
@@ -380,14 +397,26 @@ def _face_params(project: Project, config: RunConfig) -> str:
 # ------------------------------------------------------------------------------------------------- pairs
 
 
-def _score_pairs(
-    project: Project,
-    config: RunConfig,
-    scorer: _Scorer,
-    backend: Backend,
-    report: RunReport,
-    progress: Progress,
-) -> None:
+@dataclass(frozen=True)
+class _Scoring:
+    """What the scoring stages share: the project, the run's settings, where it runs and what it did."""
+
+    project: Project
+    config: RunConfig
+    scorer: _Scorer
+    backend: Backend
+    report: RunReport
+    progress: Progress
+    echo: Echo
+    started: float  # perf_counter at the first pair (max_seconds counts from it)
+
+    def out_of_time(self) -> bool:
+        limit = self.config.max_seconds
+        return limit is not None and time.perf_counter() - self.started > limit
+
+
+def _score_pairs(run: _Scoring) -> None:
+    project, config, scorer, backend, report = run.project, run.config, run.scorer, run.backend, run.report
     statuses = ("todo", "failed") if config.retry_failed else ("todo",)
     todo = project.pairs_with_status(scorer.params_hash, statuses)
     if not todo:
@@ -402,8 +431,7 @@ def _score_pairs(
         )
         for pairs in tile_batches(todo, config.batch_faces)
     ]
-    started = time.perf_counter()
-    with progress("pairs") as update:
+    with run.progress("pairs") as update:
         update(0, len(todo))
         for index, result in backend.map_unordered(score_batch, batches):
             if isinstance(result, BaseException):
@@ -420,9 +448,76 @@ def _score_pairs(
             report.pairs_done += done
             report.pairs_failed += len(result) - done
             update(len(result), 0)
-            if config.max_seconds is not None and time.perf_counter() - started > config.max_seconds:
+            if run.out_of_time():
                 report.stopped_early = True
                 break  # the batches in flight are dropped: a rerun scores them
+
+
+def _relay_pairs(run: _Scoring) -> None:
+    """Rounds of relays (:mod:`coindie.project.relay`) over each side's done pairs."""
+    from coindie.project.store import scored
+    from coindie.registration import get_method
+
+    project, config, scorer, backend, report = run.project, run.config, run.scorer, run.backend, run.report
+
+    if config.relay_neighbours < 1 or config.relay_rounds < 1:
+        return
+    if not get_method(config.method, **config.method_params).refines_from_pose:
+        run.echo(f"no relays: method {config.method!r} cannot start from a given pose")
+        return
+    files = _cache_files(project, config)
+    for round_ in range(1, config.relay_rounds + 1):
+        tried = project.tried_relays(scorer.params_hash)
+        relays = []
+        for side in project.scored_sides(scorer.params_hash):
+            pairs = [
+                {**pair, "scored": scored(pair)}
+                for pair in project.scored_pairs(scorer.params_hash, side)
+                if pair["source"] in files and pair["target"] in files
+            ]
+            relays += plan_relays(pairs, config.relay_neighbours, tried)
+        if not relays:
+            return
+        batches = _relay_batches(relays, files, scorer, config.batch_faces)
+        kept = 0
+        with run.progress(f"relays, round {round_}") as update:
+            update(0, len(relays))
+            for _, result in backend.map_unordered(relay_batch, batches):
+                if isinstance(result, BaseException):
+                    report.batches_lost += 1  # tried again by the next round or run
+                    continue
+                kept += project.commit_relays(scorer.params_hash, report.run_id, result)
+                report.relays_tried += len(result)
+                update(len(result), 0)
+                if run.out_of_time():
+                    report.stopped_early = True
+                    break
+        report.relays_kept += kept
+        run.echo(f"relays, round {round_}: {len(relays):,} tried through a third face, {kept:,} scored more")
+        if report.stopped_early or not kept:
+            return
+
+
+def _relay_batches(
+    relays: list[Relay], files: dict[str, str], scorer: _Scorer, batch_faces: int
+) -> list[RelayBatch]:
+    """The relays in tiles of faces, as :func:`tile_batches` cuts pairs (a pair's relays in one batch)."""
+    by_pair: dict[tuple[str, str], list[Relay]] = {}
+    for relay in relays:
+        by_pair.setdefault((relay.source, relay.target), []).append(relay)
+    return [
+        RelayBatch(
+            tuple(
+                (r.source, r.target, r.via, json.dumps(r.T_target_source.tolist()))
+                for pair in pairs
+                for r in by_pair[pair]
+            ),
+            tuple(sorted((face, files[face]) for face in {f for pair in pairs for f in pair})),
+            scorer.config_text,
+            2 * batch_faces,
+        )
+        for pairs in tile_batches(list(by_pair), batch_faces)
+    ]
 
 
 def _cache_files(project: Project, config: RunConfig) -> dict[str, str]:

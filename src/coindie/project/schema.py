@@ -87,6 +87,27 @@ CREATE TABLE IF NOT EXISTS labels (
 );
 """
 
+#: Every relay tried (:mod:`coindie.project.relay`): the pair registered again from a pose composed through
+#: ``via``, its probability before and after, whether the pair kept the relay's result. A project made before
+#: relays gets the table when it is opened.
+RELAYS_SCHEMA = """
+CREATE TABLE IF NOT EXISTS relays (
+    source TEXT NOT NULL,
+    target TEXT NOT NULL,
+    params_hash TEXT NOT NULL,
+    via TEXT NOT NULL,
+    before REAL,
+    after REAL,
+    kept INTEGER NOT NULL,
+    reason TEXT,
+    run_id INTEGER,
+    at TEXT NOT NULL,
+    PRIMARY KEY (source, target, params_hash, via)
+);
+"""
+
+SCHEMA += RELAYS_SCHEMA
+
 #: The experts' edit log (also the whole schema of a bare graph.json's sidecar log, coindie serve).
 EDITS_SCHEMA = """
 -- The experts' edits (the web app): an append-only log, replayed in order.

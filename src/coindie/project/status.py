@@ -19,6 +19,7 @@ class ProjectStatus:
     face_errors: list[str] = field(default_factory=list)
     pair_errors: list[str] = field(default_factory=list)
     separation: list[str] = field(default_factory=list)  # per side: do the scores separate (words, numbers)
+    relays: tuple[int, int] = (0, 0)  # relays tried, and kept (coindie.project.relay)
 
     def to_dict(self) -> dict[str, Any]:
         return asdict(self)
@@ -42,6 +43,11 @@ class ProjectStatus:
             lines.append(f"rate {self.pairs_per_second:.2f} pairs/s")
         if self.eta_seconds is not None:
             lines.append(f"ETA {_duration(self.eta_seconds)} for the remaining pairs at that rate")
+        if self.relays[0]:
+            lines.append(
+                f"relays: {self.relays[0]} registrations from a pose through a third face, "
+                f"{self.relays[1]} scored their pair higher and were kept"
+            )
         lines += self.separation
         lines += [f"bad scan: {error}" for error in self.face_errors]
         lines += [f"failed pair: {error}" for error in self.pair_errors]
@@ -66,7 +72,7 @@ def project_status(project: Project, max_errors: int = 50) -> ProjectStatus:
     pair_errors = project.failed_pairs(params, max_errors)
     return ProjectStatus(
         str(project.folder), faces, pairs, last_run, rate, eta, face_errors[:max_errors], pair_errors,
-        separation_lines(project),
+        separation_lines(project), project.relay_counts(params),
     )  # fmt: skip
 
 

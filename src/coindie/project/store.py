@@ -22,7 +22,7 @@ import numpy as np
 
 from coindie.errors import CoinDieError
 from coindie.ids import FaceId, parse_face_id
-from coindie.project.schema import PRAGMAS, SCHEMA, SCHEMA_VERSION
+from coindie.project.schema import PRAGMAS, RELAYS_SCHEMA, SCHEMA, SCHEMA_VERSION
 from coindie.similarity.calibration import (
     MAX_SAME_SHARE,
     MAX_SAME_SHARE_CANDIDATES,
@@ -174,6 +174,8 @@ class Project:
         if "features" not in columns:  # a project made before the relief scorer: its pairs lack features
             with self.transaction() as db:
                 db.execute("ALTER TABLE pairs ADD COLUMN features BLOB")
+        if not self.db.execute("SELECT name FROM sqlite_master WHERE name = 'relays'").fetchone():
+            self.db.executescript(f"BEGIN IMMEDIATE;{RELAYS_SCHEMA}COMMIT;")  # a project made before relays
 
     def meta(self, key: str, default: str | None = None) -> str | None:
         row = self.db.execute("SELECT value FROM meta WHERE key = ?", (key,)).fetchone()
@@ -463,6 +465,56 @@ class Project:
                 "updated_at = ? WHERE run_id = ?",
                 (len(rows), seconds, stamp, run_id),
             )
+
+    def tried_relays(self, params_hash: str) -> set[tuple[str, str, str]]:
+        """``(source, target, via)`` of the relays tried for ``params_hash`` (coindie.project.relay)."""
+        rows = self.db.execute("SELECT source, target, via FROM relays WHERE params_hash = ?", (params_hash,))
+        return {(r["source"], r["target"], r["via"]) for r in rows}
+
+    def relay_counts(self, params_hash: str | None) -> tuple[int, int]:
+        """Relays tried for ``params_hash``, and how many of them a pair kept."""
+        row = self.db.execute(
+            "SELECT COUNT(*) AS n, COALESCE(SUM(kept), 0) AS kept FROM relays WHERE params_hash = ?",
+            (params_hash,),
+        ).fetchone()
+        return int(row["n"]), int(row["kept"])
+
+    def commit_relays(self, params_hash: str, run_id: int, rows: list[dict[str, Any]]) -> int:
+        """One batch of relay results (:func:`coindie.project.workers.relay_batch`), atomically: each is
+        recorded in ``relays``, and replaces its done pair's figures only where it scores a higher
+        probability than the pair has now. The number of pairs that kept a relay."""
+        stamp = now()
+        kept = 0
+        with self.transaction() as db:
+            for r in rows:
+                found = db.execute(
+                    "SELECT probability FROM pairs WHERE source = ? AND target = ? AND params_hash = ? "
+                    "AND status = 'done'",
+                    (r["source"], r["target"], params_hash),
+                ).fetchone()
+                before = float(found["probability"] or 0.0) if found else None
+                after = r.get("probability") if r["status"] == "done" else None
+                keep = before is not None and after is not None and after > before
+                if keep:
+                    db.execute(
+                        "UPDATE pairs SET method = ?, valid = ?, reason = ?, probability = ?, residual = ?, "
+                        "T_target_source = ?, histogram = ?, features = ?, timings = ?, run_id = ?, "
+                        "done_at = ? WHERE source = ? AND target = ? AND params_hash = ?",
+                        (
+                            r["method"], r["valid"], r["reason"], after, r.get("residual"),
+                            r["T_target_source"], r["histogram"], r["features"], r["timings"], run_id,
+                            stamp, r["source"], r["target"], params_hash,
+                        ),
+                    )  # fmt: skip
+                    kept += 1
+                db.execute(
+                    "INSERT OR REPLACE INTO relays VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+                    (
+                        r["source"], r["target"], params_hash, r["via"], before, after, int(keep),
+                        r.get("reason"), run_id, stamp,
+                    ),
+                )  # fmt: skip
+        return kept
 
     # -------------------------------------------------------------------------------------------- runs
 

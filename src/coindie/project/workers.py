@@ -224,51 +224,72 @@ _WORKER = _Worker()
 
 def score_batch(batch: PairBatch) -> list[dict[str, Any]]:
     """Score every pair of the batch; a pair that fails returns its reason instead of raising."""
-    from coindie.similarity import score_pair
-
     _WORKER.configure(batch.config, batch.cache_faces)
     files = dict(batch.files)
-    rows = []
-    for source_id, target_id in batch.pairs:
-        cpu = time.process_time()
-        try:
-            source = _WORKER.face(source_id, files[source_id])
-            target = _WORKER.face(target_id, files[target_id])
-            score = score_pair(
-                source,
-                target,
-                _WORKER.registrar,
-                _WORKER.classifier.settings,
-                _WORKER.classifier,
-                _WORKER.sampled_faces,
-            )
-            rows.append(
-                {
-                    "source": source_id,
-                    "target": target_id,
-                    "status": "done",
-                    "method": score.method,
-                    "valid": bool(score.valid),
-                    "reason": score.reason,
-                    "probability": float(score.probability),
-                    "residual": float(score.residual) if np.isfinite(score.residual) else None,
-                    "T_target_source": json.dumps(np.asarray(score.T_target_source).tolist()),
-                    "histogram": np.asarray(score.histogram, dtype=np.float32).tobytes(),
-                    "features": np.asarray(score.features, dtype=np.float32).tobytes(),
-                    # wall seconds per stage, and the CPU seconds of the whole pair (face loading included),
-                    # which do not depend on how loaded the machine is
-                    "timings": json.dumps({**score.timings, "cpu": time.process_time() - cpu}),
-                }
-            )
-        except Exception as error:  # one bad pair is recorded with its reason; the batch goes on
-            last = traceback.extract_tb(error.__traceback__)[-1] if error.__traceback__ else None
-            where = f" ({Path(last.filename).name}:{last.lineno})" if last else ""
-            rows.append(
-                {
-                    "source": source_id,
-                    "target": target_id,
-                    "status": "failed",
-                    "reason": f"{type(error).__name__}: {error}{where}",
-                }
-            )
-    return rows
+    return [_score_row(source_id, target_id, files) for source_id, target_id in batch.pairs]
+
+
+@dataclass(frozen=True)
+class RelayBatch:
+    """Pairs to register again from a given pose (:mod:`coindie.project.relay`): ``(source, target, via,
+    T_target_source as JSON)``; the rest as :class:`PairBatch`."""
+
+    relays: tuple[tuple[str, str, str, str], ...]
+    files: tuple[tuple[str, str], ...]
+    config: str
+    cache_faces: int
+
+
+def relay_batch(batch: RelayBatch) -> list[dict[str, Any]]:
+    """Score every pair of the batch from its given pose; each row as :func:`score_batch`'s, with ``via``."""
+    _WORKER.configure(batch.config, batch.cache_faces)
+    files = dict(batch.files)
+    return [
+        {**_score_row(source_id, target_id, files, np.asarray(json.loads(T_json))), "via": via}
+        for source_id, target_id, via, T_json in batch.relays
+    ]
+
+
+def _score_row(
+    source_id: str, target_id: str, files: dict[str, str], T_init: np.ndarray | None = None
+) -> dict[str, Any]:
+    from coindie.similarity import score_pair
+
+    cpu = time.process_time()
+    try:
+        source = _WORKER.face(source_id, files[source_id])
+        target = _WORKER.face(target_id, files[target_id])
+        score = score_pair(
+            source,
+            target,
+            _WORKER.registrar,
+            _WORKER.classifier.settings,
+            _WORKER.classifier,
+            _WORKER.sampled_faces,
+            T_init=T_init,
+        )
+    except Exception as error:  # one bad pair is recorded with its reason; the batch goes on
+        last = traceback.extract_tb(error.__traceback__)[-1] if error.__traceback__ else None
+        where = f" ({Path(last.filename).name}:{last.lineno})" if last else ""
+        return {
+            "source": source_id,
+            "target": target_id,
+            "status": "failed",
+            "reason": f"{type(error).__name__}: {error}{where}",
+        }
+    return {
+        "source": source_id,
+        "target": target_id,
+        "status": "done",
+        "method": score.method,
+        "valid": bool(score.valid),
+        "reason": score.reason,
+        "probability": float(score.probability),
+        "residual": float(score.residual) if np.isfinite(score.residual) else None,
+        "T_target_source": json.dumps(np.asarray(score.T_target_source).tolist()),
+        "histogram": np.asarray(score.histogram, dtype=np.float32).tobytes(),
+        "features": np.asarray(score.features, dtype=np.float32).tobytes(),
+        # wall seconds per stage, and the CPU seconds of the whole pair (face loading included), which do
+        # not depend on how loaded the machine is
+        "timings": json.dumps({**score.timings, "cpu": time.process_time() - cpu}),
+    }
