@@ -150,9 +150,10 @@ def test_the_hoards_own_clusters_overrule_a_scorers_veto_where_they_stand_out(se
     die, log_odds = _vetoed_hoard(seed, gap=11.0)
     truth, calibrated_graph = _graphs(die, log_odds)
     kept = cluster_twice(calibrated_graph, "consensus")
-    overruled = cluster_twice(calibrated_graph, "consensus", lambda: _mixture_graph(die, log_odds))
+    overruled = cluster_twice(calibrated_graph, "consensus", lambda across: _mixture_graph(die, log_odds))
     assert not kept.overruled_scorer and kept.first_silhouette < second_pass.CLEAR_SILHOUETTE
-    assert overruled.overruled_scorer and overruled.first_silhouette >= second_pass.CLEAR_SILHOUETTE
+    assert overruled.overruled_scorer and overruled.overrule_silhouette >= second_pass.CLEAR_SILHOUETTE
+    assert not overruled.second_pass
     assert evaluate(overruled.clusters.labels, truth).fmi > 0.95
     assert evaluate(overruled.clusters.labels, truth).fmi > evaluate(kept.clusters.labels, truth).fmi
 
@@ -164,11 +165,54 @@ def test_a_vetoed_mixture_whose_clusters_do_not_stand_out_is_not_used() -> None:
     _, calibrated_graph = _graphs(die, log_odds)
     tried = []
 
-    def murky_mixture() -> ProbabilityGraph:
-        tried.append(True)
+    def murky_mixture(across) -> ProbabilityGraph:  # noqa: ANN001
+        tried.append(across)
         return calibrated_graph(None)
 
     result = cluster_twice(calibrated_graph, "consensus", murky_mixture)
     alone = cluster_twice(calibrated_graph, "consensus")
-    assert tried and not result.overruled_scorer and result.second_pass
+    assert tried[0] is None and tried[1] is not None  # tried in each pass
+    assert not result.overruled_scorer and result.second_pass
     assert result.clusters.labels == alone.clusters.labels
+
+
+def _worn_vetoed_hoard(seed: int) -> tuple[np.ndarray, np.ndarray]:
+    """Scans unlike the scorer's (every pair below log-odds 0) and worn unevenly: each face's pull larger
+    than the same-die gap."""
+    rng = np.random.default_rng(seed)
+    die = np.repeat(np.arange(6), [9, 7, 6, 4, 3, 2])
+    pull = rng.normal(0.0, 2.5, len(die))
+    i, j = np.triu_indices(len(die), k=1)
+    same = die[i] == die[j]
+    return die, -16.0 + pull[i] + pull[j] + 6.0 * same + rng.normal(0.0, 0.7, len(i))
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_a_vetoed_mixture_is_tried_again_once_each_faces_pull_is_off(seed: int) -> None:
+    """The mixture of the raw scores is murky (the pulls blur the dies), but once each face's pull is
+    taken off its clusters stand out: the second pass keeps them, and finds the dies the veto hid."""
+    from coindie.similarity.calibration import calibrate_hoard
+
+    die, log_odds = _worn_vetoed_hoard(seed)
+    truth, calibrated_graph = _graphs(die, log_odds)
+    names = list(truth)
+    i, j = np.triu_indices(len(die), k=1)
+    sources, targets = [names[k] for k in i], [names[k] for k in j]
+    p = 1.0 / (1.0 + np.exp(-log_odds))
+
+    def mixture(across):  # noqa: ANN001, ANN202
+        q = (
+            p
+            if across is None
+            else without_face_effects_across(p, np.ones(len(p), bool), sources, targets, across)
+        )
+        L = np.log(q) - np.log1p(-q)
+        weights = calibrate_hoard(q, scorer_veto=False).probability(L)
+        return ProbabilityGraph.from_edges(list(zip(sources, targets, weights, strict=True)), names)
+
+    kept = cluster_twice(calibrated_graph, "consensus")
+    overruled = cluster_twice(calibrated_graph, "consensus", mixture)
+    assert overruled.second_pass and overruled.overruled_scorer and not kept.overruled_scorer
+    assert overruled.overrule_silhouette >= second_pass.CLEAR_SILHOUETTE
+    assert evaluate(overruled.clusters.labels, truth).fmi > 0.9
+    assert evaluate(overruled.clusters.labels, truth).fmi > evaluate(kept.clusters.labels, truth).fmi + 0.1

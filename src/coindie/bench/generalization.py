@@ -166,13 +166,14 @@ def evaluate_row(row: str, scorer_name: str, scorer: Any, project: Any, hoard: P
         last: dict[str, Any] = {}
         side_graph = partial(_side_graph, mine, raw[on], valid[on], populations, side_faces, last)
         first_graph = side_graph(None)  # and whether the scorer vetoed the hoard's calibration
-        separates, vetoed = last["separates"], last["vetoed"]
+        separates = last["separates"]
         result = cluster_twice(
             partial(_first_or_again, first_graph, side_graph),
             CLUSTERING,
-            partial(side_graph, None, scorer_veto=False) if vetoed else None,
+            partial(_vetoed_graph, side_graph, last),
         )
-        calibrated[on] = last["weights"]
+        chosen = {frozenset((a, b)): w for a, b, w in result.graph.edges()}  # the weights clustered
+        calibrated[on] = [chosen.get(frozenset((p["source"], p["target"])), 0.0) for p in mine]
         all_separate &= separates or result.overruled_scorer
         cuts.append(result.choice.threshold)
         parts.append(result.clusters)
@@ -191,6 +192,13 @@ def evaluate_row(row: str, scorer_name: str, scorer: Any, project: Any, hoard: P
 def _first_or_again(first: Any, side_graph: Callable[[Any], Any], across: dict[str, Any] | None) -> Any:
     """The first pass's graph (already made), or the side's graph made again across a first clustering."""
     return first if across is None else side_graph(across)
+
+
+def _vetoed_graph(side_graph: Callable[..., Any], last: dict[str, Any], across: dict[str, Any] | None) -> Any:
+    """The side's graph calibrated by the hoard's mixture where only the scorer's veto refused it (as
+    ``Project._vetoed_mixture``), else None."""
+    side_graph(across)
+    return side_graph(across, scorer_veto=False) if last["vetoed_now"] else None
 
 
 def _side_graph(
@@ -215,8 +223,10 @@ def _side_graph(
     last["weights"], calibration = calibrated_side(
         raw, valid, sources, targets, across=across, prior=populations, scorer_veto=scorer_veto
     )
-    if across is None and scorer_veto:
-        last["separates"], last["vetoed"] = calibration.separates, calibration.vetoed
+    if scorer_veto:
+        last["vetoed_now"] = calibration.vetoed
+        if across is None:
+            last["separates"] = calibration.separates
     edges = [(p["source"], p["target"], float(w)) for p, w in zip(pairs, last["weights"], strict=True)]
     return ProbabilityGraph.from_edges(edges, faces)
 

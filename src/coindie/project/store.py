@@ -15,6 +15,7 @@ from collections.abc import Iterable, Iterator, Mapping
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 from datetime import UTC, datetime
+from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -28,7 +29,6 @@ from coindie.similarity.calibration import (
     MAX_SAME_SHARE_CANDIDATES,
     MIXTURE_THRESHOLD,
     HoardCalibration,
-    calibrated_probabilities,
     calibrated_side,
 )
 
@@ -646,30 +646,43 @@ class Project:
         result = cluster_twice(
             lambda across: graph if across is None else self.probability_graph(side, across=across),
             method,
-            (lambda: self.probability_graph(side, scorer_veto=False)) if calibration.vetoed else None,
+            partial(self._vetoed_mixture, side),
         )
         note = ""
         if result.second_pass:
             note = f", each face's pull taken off (first clusters' silhouette {result.first_silhouette:.2f})"
         if result.overruled_scorer:
-            note = (
+            note += (
                 ", on the hoard's own score populations, which the scorer had judged different-die: their "
-                f"clusters stand out (silhouette {result.first_silhouette:.2f})"
+                f"clusters stand out (silhouette {result.overrule_silhouette:.2f})"
             )
         separates = calibration.separates or result.overruled_scorer
         how = _consensus_how(result.choice, note, separates=separates)
         return result.graph, result.choice.threshold, how, result.params
 
-    def calibration(self, side: str, params_hash: str | None = None) -> HoardCalibration:
+    def _vetoed_mixture(self, side: str, across: Mapping[str, object] | None) -> ProbabilityGraph | None:
+        """``side``'s graph calibrated by the hoard's mixture where only the scorer's veto refused it
+        (each face's pull taken off first across ``across``), None where the calibration stands or fails
+        for another reason (:func:`coindie.clustering.second_pass.cluster_twice`)."""
+        if not self.calibration(side, across=across).vetoed:
+            return None
+        return self.probability_graph(side, across=across, scorer_veto=False)
+
+    def calibration(
+        self, side: str, params_hash: str | None = None, *, across: Mapping[str, object] | None = None
+    ) -> HoardCalibration:
         """The two populations of ``side``'s scored pairs (:func:`coindie.similarity.calibrate_hoard`),
-        EM started from the run's scorer's training populations."""
+        EM started from the run's scorer's training populations; with ``across`` (a first clustering),
+        each face's pull fitted across its clusters taken off first."""
         params_hash = params_hash or self.current_params()
         pairs = self.scored_pairs(params_hash, side)
         probabilities = [float(p["probability"] or 0.0) for p in pairs]
         prior, what = self._calibration_start(side, params_hash)
         valid = [scored(p) for p in pairs]
-        cap = _max_same_share(pairs)
-        return calibrated_probabilities(probabilities, valid, prior=prior, what=what, max_same_share=cap)[1]
+        return calibrated_side(
+            probabilities, valid, [p["source"] for p in pairs], [p["target"] for p in pairs],
+            across=across, prior=prior, what=what, max_same_share=_max_same_share(pairs),
+        )[1]  # fmt: skip
 
     def _calibration_start(
         self, side: str, params_hash: str | None
