@@ -146,3 +146,37 @@ def test_a_same_die_pair_whose_registration_was_lost_comes_back_through_a_third_
     tried = project.relay_counts(project.current_params())[0]
     again = run_project(open_project(tmp_path / "project"), RunConfig(workers=2), echo=lambda _: None)
     assert project.relay_counts(project.current_params())[0] == tried + again.relays_tried
+
+
+def test_a_relay_replaces_its_pair_only_where_it_raises_the_odds_clearly(hoard, tmp_path) -> None:
+    """A pair at 0.2: a relay at 0.25 (log-odds +0.29, the spread of registering one pose again) is
+    recorded and not kept; one at 0.6 (+1.79) replaces the pair's figures; a refused pair (0) takes any
+    relay that scores it."""
+    from coindie.project import init_project
+    from coindie.project.relay import MIN_GAIN
+
+    project, _ = init_project(tmp_path / "project", hoard)
+    run = project.start_run("h", "{}", "test", 0, "here")
+    project.plan_pairs("h", "D", "exhaustive", run, [("L0001D", "L0002D"), ("L0001D", "L0003D")])
+    done = {"status": "done", "method": "relief", "valid": True, "reason": "", "T_target_source": "[]",
+            "histogram": b"", "features": b""}  # fmt: skip
+    project.commit_pairs(
+        "h", run,
+        [
+            {**done, "source": "L0001D", "target": "L0002D", "probability": 0.2},
+            {**done, "source": "L0001D", "target": "L0003D", "probability": 0.0, "valid": False},
+        ],
+        0.0,
+    )  # fmt: skip
+
+    def relay(target: str, via: str, p: float) -> dict:
+        return {**done, "source": "L0001D", "target": target, "via": via, "probability": p, "timings": "{}"}
+
+    kept = project.commit_relays(
+        "h", run, [relay("L0002D", "L0004D", 0.25), relay("L0003D", "L0004D", 0.01)], MIN_GAIN
+    )
+    assert kept == 1
+    assert project.commit_relays("h", run, [relay("L0002D", "L0005D", 0.6)], MIN_GAIN) == 1
+    probability = {(p["source"], p["target"]): p["probability"] for p in project.scored_pairs("h")}
+    assert probability == {("L0001D", "L0002D"): 0.6, ("L0001D", "L0003D"): 0.01}
+    assert project.relay_counts("h") == (3, 2)

@@ -16,9 +16,10 @@ Which pairs (:func:`plan_relays`, a pure function of one side's scored pairs):
 - at most ``per_pair`` relays per pair (the strongest chains, by their weaker link), each (pair, via)
   once per parameter set (the project's ``relays`` table records every attempt).
 
-The pair keeps the relay's result only where it scores higher than its own (:meth:`coindie.project.
-store.Project.commit_relays`): a wrong start that the refinement cannot mend scores lower and changes
-nothing. Rounds repeat this on the updated scores, so chains longer than two links close in turn.
+The pair keeps the relay's result only where it scores clearly higher than its own, its log-odds raised
+by more than :data:`MIN_GAIN` (:meth:`coindie.project.store.Project.commit_relays`): a wrong start that
+the refinement cannot mend scores lower and changes nothing. Rounds repeat this on the updated scores,
+so chains longer than two links close in turn.
 """
 
 from __future__ import annotations
@@ -39,6 +40,17 @@ DEFAULT_NEIGHBOURS = 4
 DEFAULT_ROUNDS = 3
 #: Relays tried per pair and round, the strongest chains first.
 PER_PAIR = 2
+#: A relay replaces its pair's result only where it raises the pair's log-odds by more than this: less is
+#: the spread of registering one pose again from a nearby start (on four hoards the relays that raised
+#: pairs of two dies raised them by 0.5-0.8 in the median), and keeping the best of such draws would lift
+#: the hoard's different-die population unevenly. BENCHMARK.md, "Relays, and the veto asked again".
+MIN_GAIN = 1.0
+
+
+def log_odds_gain(before: float, after: float) -> float:
+    """``logit(after) - logit(before)``, probabilities clipped to [1e-12, 1 - 1e-12] (a refused pair is 0)."""
+    a, b = np.clip([after, before], 1e-12, 1.0 - 1e-12)
+    return float(np.log(a / (1.0 - a)) - np.log(b / (1.0 - b)))
 
 
 @dataclass(frozen=True)

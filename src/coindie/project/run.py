@@ -39,7 +39,7 @@ from coindie import __version__
 from coindie.errors import CoinDieError
 from coindie.params import Configurable, param
 from coindie.project.backends import Backend, WorkerLost, make_backend
-from coindie.project.relay import DEFAULT_NEIGHBOURS, DEFAULT_ROUNDS, Relay, plan_relays
+from coindie.project.relay import DEFAULT_NEIGHBOURS, DEFAULT_ROUNDS, MIN_GAIN, Relay, plan_relays
 from coindie.project.store import Project, ProjectError
 from coindie.project.workers import (
     PAIR_FUNCTION_VERSION,
@@ -486,7 +486,7 @@ def _relay_pairs(run: _Scoring) -> None:
                 if isinstance(result, BaseException):
                     report.batches_lost += 1  # tried again by the next round or run
                     continue
-                kept += project.commit_relays(scorer.params_hash, report.run_id, result)
+                kept += project.commit_relays(scorer.params_hash, report.run_id, result, MIN_GAIN)
                 report.relays_tried += len(result)
                 update(len(result), 0)
                 if run.out_of_time():

@@ -479,10 +479,14 @@ class Project:
         ).fetchone()
         return int(row["n"]), int(row["kept"])
 
-    def commit_relays(self, params_hash: str, run_id: int, rows: list[dict[str, Any]]) -> int:
+    def commit_relays(
+        self, params_hash: str, run_id: int, rows: list[dict[str, Any]], min_gain: float = 0.0
+    ) -> int:
         """One batch of relay results (:func:`coindie.project.workers.relay_batch`), atomically: each is
-        recorded in ``relays``, and replaces its done pair's figures only where it scores a higher
-        probability than the pair has now. The number of pairs that kept a relay."""
+        recorded in ``relays``, and replaces its done pair's figures only where it raises the pair's
+        log-odds by more than ``min_gain`` (:data:`coindie.project.relay.MIN_GAIN`). The number kept."""
+        from coindie.project.relay import log_odds_gain
+
         stamp = now()
         kept = 0
         with self.transaction() as db:
@@ -494,7 +498,7 @@ class Project:
                 ).fetchone()
                 before = float(found["probability"] or 0.0) if found else None
                 after = r.get("probability") if r["status"] == "done" else None
-                keep = before is not None and after is not None and after > before
+                keep = before is not None and after is not None and log_odds_gain(before, after) > min_gain
                 if keep:
                     db.execute(
                         "UPDATE pairs SET method = ?, valid = ?, reason = ?, probability = ?, residual = ?, "
