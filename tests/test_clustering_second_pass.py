@@ -213,6 +213,6 @@ def test_a_vetoed_mixture_is_tried_again_once_each_faces_pull_is_off(seed: int) 
     kept = cluster_twice(calibrated_graph, "consensus")
     overruled = cluster_twice(calibrated_graph, "consensus", mixture)
     assert overruled.second_pass and overruled.overruled_scorer and not kept.overruled_scorer
-    assert overruled.overrule_silhouette >= second_pass.CLEAR_SILHOUETTE
+    assert overruled.overrule_silhouette >= second_pass.OVERRULE_AFTER_PULLS_SILHOUETTE
     assert evaluate(overruled.clusters.labels, truth).fmi > 0.9
     assert evaluate(overruled.clusters.labels, truth).fmi > evaluate(kept.clusters.labels, truth).fmi + 0.1

@@ -36,6 +36,17 @@ from coindie.clustering.threshold import ThresholdChoice, select_threshold_unsup
 CLEAR_SILHOUETTE = 0.6
 
 
+#: In the second pass, the silhouette at or above which the clusters of the hoard's own mixture (the
+#: scorer's veto set aside, each face's pull taken off) are kept. Below the first pass's gate: there the
+#: mixture of raw scores may split kinds of different-die pairs, and its clusters must stand out as the
+#: scorer's would; here the pulls are off and the split is already clear (Ashman's D at least 3). Chosen on
+#: the independent generator's hard hoards of seeds 1-3, whose second-pass mixtures stood at 0.47-0.54 and
+#: gave FMI 0.84-0.99 on those sides, against 0.35-0.54 with the veto; checked on seed 4 and on coindie's
+#: own all-hard and riedones hoards, none of which had a side in between (BENCHMARK.md, "Relays, and the
+#: veto asked again").
+OVERRULE_AFTER_PULLS_SILHOUETTE = 0.45
+
+
 #: How the consensus compares two faces' rows in each pass (:mod:`coindie.clustering.consensus`): by the
 #: weight they share where the dies may stand out, by direction alone once each face's pull is taken off
 #: (its remaining link strength is still more its wear than its die).
@@ -99,7 +110,8 @@ def cluster_twice(
     calibration was not vetoed. When the first clusters do not
     stand out, its own first clusters are tried, and kept if *they* stand out: the scorer's sense of scale
     comes from its training scans, the clusters from this hoard. So is the second pass: its mixture, once
-    each face's pull is off, cut where its clusters' silhouette is best and kept if they stand out. On the
+    each face's pull is off, cut where its clusters' silhouette is best and kept if they stand out
+    (:data:`OVERRULE_AFTER_PULLS_SILHOUETTE`). On the
     independent generator's hard hoard (seed 1) the pulls take the obverses' pair AUC from 0.85 to 0.94,
     but the scorer vetoed the split there too and left every probability under 0.01, which no cut of the
     consensus reads (FMI 0.56); the mixture's clusters stand out (0.70) and give 0.93.
@@ -127,7 +139,7 @@ def cluster_twice(
     mixture = vetoed_mixture(across) if vetoed_mixture is not None else None
     if mixture is not None:
         own, clusters, standing = _first_pass(mixture, method, params)
-        if standing >= CLEAR_SILHOUETTE:
+        if standing >= OVERRULE_AFTER_PULLS_SILHOUETTE:
             return TwoPassResult(mixture, own, clusters, clear, True, params, True, standing)
     choice = select_threshold_unsupervised(graph, method, criterion="modularity", **params)
     return TwoPassResult(
