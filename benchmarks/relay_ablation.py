@@ -50,9 +50,10 @@ def without_relays(folder: Path, copy: Path) -> Path:
 
 def side_fmi(project: Project, side: str, truth: dict[str, str], ask_again: bool) -> float:
     graph = project.probability_graph(side)
+    first = project.calibration(side)
 
     def vetoed(across):  # noqa: ANN001, ANN202
-        return project._vetoed_mixture(side, across) if ask_again or across is None else None
+        return project._vetoed_mixture(side, first, across) if ask_again or across is None else None
 
     result = cluster_twice(
         lambda across: graph if across is None else project.probability_graph(side, across=across),

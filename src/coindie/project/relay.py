@@ -78,9 +78,11 @@ def plan_relays(
     tried = tried or set()
     probability: dict[frozenset[str], float] = {}
     pose: dict[tuple[str, str], FloatArray] = {}  # (to, from) -> T_to_from
+    source_of: dict[frozenset[str], str] = {}  # the direction each pair was planned (and is stored) in
     for pair in pairs:
         a, b = str(pair["source"]), str(pair["target"])
         probability[frozenset((a, b))] = float(pair["probability"] or 0.0)
+        source_of[frozenset((a, b))] = a
         if pair["scored"] and pair.get("T_target_source") is not None:
             T_b_a = np.asarray(pair["T_target_source"], dtype=np.float64)
             pose[b, a] = T_b_a
@@ -106,7 +108,6 @@ def plan_relays(
             for i, a in enumerate(ordered):
                 for b in ordered[i + 1 :]:
                     vias.setdefault((a, b), set()).add(c)
-    source_of = {frozenset((str(p["source"]), str(p["target"]))): str(p["source"]) for p in pairs}
     relays = []
     for (a, b), through in sorted(vias.items()):
         key = frozenset((a, b))

@@ -650,7 +650,7 @@ class Project:
         result = cluster_twice(
             lambda across: graph if across is None else self.probability_graph(side, across=across),
             method,
-            partial(self._vetoed_mixture, side),
+            partial(self._vetoed_mixture, side, calibration),
         )
         note = ""
         if result.second_pass:
@@ -664,11 +664,15 @@ class Project:
         how = _consensus_how(result.choice, note, separates=separates)
         return result.graph, result.choice.threshold, how, result.params
 
-    def _vetoed_mixture(self, side: str, across: Mapping[str, object] | None) -> ProbabilityGraph | None:
+    def _vetoed_mixture(
+        self, side: str, first: HoardCalibration, across: Mapping[str, object] | None
+    ) -> ProbabilityGraph | None:
         """``side``'s graph calibrated by the hoard's mixture where only the scorer's veto refused it
         (each face's pull taken off first across ``across``), None where the calibration stands or fails
-        for another reason (:func:`coindie.clustering.second_pass.cluster_twice`)."""
-        if not self.calibration(side, across=across).vetoed:
+        for another reason (:func:`coindie.clustering.second_pass.cluster_twice`). ``first``: the side's
+        calibration without ``across``, which the caller holds already."""
+        calibration = first if across is None else self.calibration(side, across=across)
+        if not calibration.vetoed:
             return None
         return self.probability_graph(side, across=across, scorer_veto=False)
 
