@@ -110,6 +110,7 @@ def test_a_same_die_pair_whose_registration_was_lost_comes_back_through_a_third_
     from coindie.project import init_project, open_project
     from coindie.project.run import RunConfig, run_project
     from coindie.registration.metrics import rotation_error_deg, translation_error_mm
+    from coindie.similarity.scorers import default_scorer
     from coindie.synth.writer import read_truth, true_transform
 
     truth = read_truth(hoard)
@@ -140,6 +141,9 @@ def test_a_same_die_pair_whose_registration_was_lost_comes_back_through_a_third_
     assert back["valid"] and back["probability"] > 0.5, back["reason"]
     assert rotation_error_deg(true_transform(truth, a, b), back["T_target_source"]) < 1.0
     assert translation_error_mm(true_transform(truth, a, b), back["T_target_source"]) < 0.3
+    # the relay measured the paper's histogram at its pose (relays that cannot be kept measure none)
+    settings = default_scorer().settings
+    assert np.isclose(back["histogram"].sum() * settings.max_distance_mm / settings.bins, 1.0, atol=1e-3)
     for key, q in after.items():
         if die[key[0]] != die[key[1]]:
             assert q["probability"] < 0.5 or p[key] >= 0.5, key

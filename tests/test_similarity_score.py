@@ -11,7 +11,7 @@ import pytest
 from coindie.io import read_scan
 from coindie.io.truth import load_truth
 from coindie.registration import get_method
-from coindie.similarity import PairScore, SameDieClassifier, score_pair
+from coindie.similarity import PairScore, SameDieClassifier, add_histogram, score_pair
 from coindie.similarity.batch import BatchConfig, PairTask, measure_pairs, read_scores, tiles
 from coindie.similarity.relief_classifier import ReliefClassifier
 from coindie.similarity.scorers import load_scorer
@@ -61,6 +61,22 @@ def test_pair_score_round_trips_through_json(hoard: Path) -> None:
     assert again.source_id == score.source_id and again.probability == score.probability
     np.testing.assert_array_equal(again.T_target_source, score.T_target_source)
     np.testing.assert_array_equal(again.histogram, score.histogram)
+
+
+def test_a_score_without_its_histogram_gets_the_same_one_later_and_the_same_probability(hoard: Path) -> None:
+    """``with_histogram=False`` (relays that may be thrown away) changes neither pose nor probability of the
+    relief scorer; :func:`add_histogram` measures what the full score holds. The paper scorer, which reads
+    the histogram, measures it regardless."""
+    (a, b), _ = _pairs_by_die(hoard)
+    source, target = read_scan(a), read_scan(b)
+    full = score_pair(source, target)
+    bare = score_pair(source, target, with_histogram=False)
+    assert not bare.histogram.any() and "histogram" not in bare.timings
+    assert bare.probability == full.probability
+    np.testing.assert_array_equal(bare.T_target_source, full.T_target_source)
+    np.testing.assert_allclose(add_histogram(bare, source, target).histogram, full.histogram, atol=1e-12)
+    paper = SameDieClassifier.load_default()
+    assert score_pair(source, target, classifier=paper, with_histogram=False).histogram.any()
 
 
 class _Refuses:

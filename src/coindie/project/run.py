@@ -508,13 +508,14 @@ def _relay_batches(
     return [
         RelayBatch(
             tuple(
-                (r.source, r.target, r.via, json.dumps(r.T_target_source.tolist()))
+                (r.source, r.target, r.via, json.dumps(r.T_target_source.tolist()), r.before)
                 for pair in pairs
                 for r in by_pair[pair]
             ),
             tuple(sorted((face, files[face]) for face in {f for pair in pairs for f in pair})),
             scorer.config_text,
             2 * batch_faces,
+            MIN_GAIN,
         )
         for pairs in tile_batches(list(by_pair), batch_faces)
     ]

@@ -13,7 +13,7 @@ from coindie.similarity.histogram import (
     density_histogram,
     main_normal,
 )
-from coindie.similarity.score import PairScore, measure_pair, score_pair
+from coindie.similarity.score import PairScore, add_histogram, measure_pair, score_pair
 
 __all__ = [
     "ClassifierError",
@@ -24,6 +24,7 @@ __all__ = [
     "c2c_histogram",
     "density_histogram",
     "main_normal",
+    "add_histogram",
     "measure_pair",
     "score_pair",
 ]

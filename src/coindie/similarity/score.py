@@ -109,6 +109,7 @@ def score_pair(
     faces: FaceCache | None = None,
     *,
     T_init: FloatArray | None = None,
+    with_histogram: bool = True,
 ) -> PairScore:
     """Register ``source`` onto ``target``, measure the aligned pair (the paper's distance histogram and
     the relief features), and estimate the probability that both faces were struck by the same die.
@@ -118,13 +119,35 @@ def score_pair(
     cache of sampled faces (``faces``: a caller scoring many pairs passes one sized for its faces).
     ``T_init`` (T_target_source) starts the registration from a given pose instead of the method's global
     step (a pose composed through a third face); only methods that ``refines_from_pose`` accept it.
+    ``with_histogram=False`` leaves the histogram out (zeros) where the classifier does not read it: a
+    caller that may throw the result away measures it later with :func:`add_histogram`.
     """
     classifier = classifier if classifier is not None else _default_classifier()
     settings = settings if settings is not None else classifier.settings
     features = getattr(classifier, "features", None)
-    return measure_pair(source, target, registrar, settings, features, faces, T_init=T_init).classified(
-        classifier
+    histogram = with_histogram or classifier.INPUT == "histogram"
+    measured = measure_pair(
+        source, target, registrar, settings, features, faces, T_init=T_init, with_histogram=histogram
     )
+    return measured.classified(classifier)
+
+
+def add_histogram(
+    score: PairScore,
+    source: Scan,
+    target: Scan,
+    settings: HistogramSettings | None = None,
+    faces: FaceCache | None = None,
+) -> PairScore:
+    """``score`` with the distance histogram of its pose measured (a score made ``with_histogram=False``);
+    an invalid registration keeps its zeros."""
+    if not score.valid:
+        return score
+    mark = time.perf_counter()
+    histogram = c2c_histogram(source, target, score.T_target_source, settings, faces)
+    spent = time.perf_counter() - mark
+    timings = {**score.timings, "histogram": spent, "total": score.timings.get("total", 0.0) + spent}
+    return replace(score, histogram=histogram, timings=timings)
 
 
 def measure_pair(
@@ -136,6 +159,7 @@ def measure_pair(
     faces: FaceCache | None = None,
     *,
     T_init: FloatArray | None = None,
+    with_histogram: bool = True,
 ) -> PairScore:
     """:func:`score_pair` without the classifier (``probability`` is NaN for a valid registration, 0 for
     an invalid one): what a batch stores, so that either scorer can be trained on, or applied to, the
@@ -158,9 +182,11 @@ def measure_pair(
             result.T_target_source, False, result.reason or "registration failed", np.zeros(settings.bins),
             0.0, timings, residual=result.residual, features=np.zeros(len(FEATURE_NAMES)), **ids,
         )  # fmt: skip
-    mark = time.perf_counter()
-    histogram = c2c_histogram(source, target, result.T_target_source, settings, faces)
-    timings["histogram"] = time.perf_counter() - mark
+    histogram = np.zeros(settings.bins)
+    if with_histogram:
+        mark = time.perf_counter()
+        histogram = c2c_histogram(source, target, result.T_target_source, settings, faces)
+        timings["histogram"] = time.perf_counter() - mark
     mark = time.perf_counter()
     relief = relief_features(source, target, result.T_target_source, features)
     timings["features"] = time.perf_counter() - mark
