@@ -274,6 +274,8 @@ def _score_row(
     from coindie.similarity import add_histogram, score_pair
 
     cpu = time.process_time()
+    # the paper scorer reads the histogram: measured with the pair whatever ``histogram_if`` says
+    measured = histogram_if is None or _WORKER.classifier.INPUT == "histogram"
     try:
         source = _WORKER.face(source_id, files[source_id])
         target = _WORKER.face(target_id, files[target_id])
@@ -285,9 +287,8 @@ def _score_row(
             _WORKER.classifier,
             _WORKER.sampled_faces,
             T_init=T_init,
-            with_histogram=histogram_if is None,
+            with_histogram=measured,
         )
-        measured = histogram_if is None or _WORKER.classifier.INPUT == "histogram"
         if histogram_if is not None and not measured and score.valid and histogram_if(score.probability):
             score = add_histogram(score, source, target, _WORKER.classifier.settings, _WORKER.sampled_faces)
             measured = True

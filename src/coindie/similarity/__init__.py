@@ -20,11 +20,11 @@ __all__ = [
     "HistogramSettings",
     "PairScore",
     "SameDieClassifier",
+    "add_histogram",
     "c2c_distances",
     "c2c_histogram",
     "density_histogram",
     "main_normal",
-    "add_histogram",
     "measure_pair",
     "score_pair",
 ]
