@@ -43,7 +43,7 @@ demo: $(STAMP)
 	$(VENV)/bin/coindie demo $(DEMO_OUT)
 	@if [ "$(DEMO_SERVE)" != "0" ]; then \
 		echo "Review the clusters in the browser (Ctrl-C stops; DEMO_SERVE=0 skips this):"; \
-		$(VENV)/bin/coindie serve $(DEMO_OUT)/project --threshold 0.5; \
+		$(VENV)/bin/coindie serve $(DEMO_OUT)/project; \
 	fi
 
 # The numerically sensitive tests (marked numeric) again under two other OpenBLAS kernels, so that the suite

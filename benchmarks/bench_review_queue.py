@@ -28,6 +28,7 @@ from coindie.clustering import evaluate
 from coindie.clustering.corrections import corrected_clusters, pair
 from coindie.project import open_project
 from coindie.project.edits import EditLog
+from coindie.serve.cuts import threshold_links
 from coindie.serve.queue import review_queue
 
 
@@ -51,7 +52,7 @@ def simulate(graph, truth: dict[str, str], tau: float, order: str, seed: int = 0
                 return curve
             nxt = None
             if order == "queue":
-                items = review_queue(graph, corrections, tau, limit=1)
+                items = review_queue(graph, threshold_links(graph, corrections), corrections, tau, limit=1)
                 nxt = (items[0].a, items[0].b) if items else None
             if nxt is None or pair(*nxt) in checked:
                 nxt = next((a, b) for a, b, _ in edges if pair(a, b) not in checked)

@@ -123,6 +123,21 @@ def test_e2e_slider_changes_cluster_count_as_the_server_says(browser, server):
     assert not page.errors
 
 
+def test_e2e_project_opens_on_cluster_auto_and_its_slider_agrees_with_the_server(browser, fresh_project):
+    from serve_support import served
+
+    with served(fresh_project) as url:  # no --threshold: each side as coindie cluster --auto cuts it
+        page = open_page(browser, url)
+        state = api(url, "/api/state")
+        assert state["method"] == "consensus" and state["links"]
+        assert page.evaluate("window.coindie.tau") == state["threshold"]
+        for t in (state["threshold"], 0.9, 0.1):
+            set_threshold(page, t)
+            expected = api(url, f"/api/clusters?threshold={t}")
+            assert counts(page) == (expected["n_clusters"], expected["n_singletons"]), t
+        assert not page.errors
+
+
 def test_e2e_search_padding_and_pair_view_images(browser, server):
     url, _ = server
     page = open_page(browser, url)

@@ -1,6 +1,8 @@
 // The coindie review app. The server owns the state (the replayed edit log, coindie.clustering.corrections);
 // this page draws it: the link overrides come resolved from /api/state, and the slider only recomputes the
-// connected components of the kept links (probability > τ and not cut, or forced) to recolour the graph.
+// connected components of the kept links (value > t and not cut, or forced) to recolour the graph. The links
+// are the probabilities (the paper's τ), or, for a project opened as `coindie cluster --auto` cuts it, the
+// merges of each side's tree (state.links, valued so that every side's own cut is at the start value).
 import Graph from "graphology";
 import Sigma from "sigma";
 import { threeView } from "./three_view.js";
@@ -17,7 +19,7 @@ const STATES = { auto: 0, cut: 1, forced: 2, expert: 3 };
 
 const app = {
   state: null, seq: 0, tau: 0.95, graph: null, renderer: null, nodeIndex: new Map(),
-  src: null, dst: null, prob: null, edgeState: null, label: null, size: null, kept: null,
+  src: null, dst: null, prob: null, edgeState: null, label: null, size: null, kept: null, links: null,
   selected: null, matches: null, verified: new Set(), pairList: [], pairPos: 0, pair: null,
   timings: [],
 };
@@ -62,19 +64,27 @@ function components() {
     while (parent[x] !== x) { parent[x] = parent[parent[x]]; x = parent[x]; }
     return x;
   };
+  const union = (x, y) => {
+    const a = find(x), b = find(y);
+    if (a !== b) parent[Math.max(a, b)] = Math.min(a, b);
+  };
   const m = app.prob.length;
   const kept = new Uint8Array(m);
+  const tree = app.links !== null;
+  if (tree) { // the sides' trees: their merges above t (the server left out those an expert cut)
+    const { src, dst, value } = app.links;
+    for (let l = 0; l < value.length; l++) if (value[l] > app.tau) union(src[l], dst[l]);
+  }
   for (let e = 0; e < m; e++) {
     const s = app.edgeState[e];
     if (s === 1) continue;
-    if (s === 2 || app.prob[e] > app.tau) {
-      kept[e] = 1;
-      const a = find(app.src[e]), b = find(app.dst[e]);
-      if (a !== b) parent[Math.max(a, b)] = Math.min(a, b);
-    }
+    if (s === 2 || (!tree && app.prob[e] > app.tau)) { kept[e] = 1; union(app.src[e], app.dst[e]); }
   }
   const label = new Int32Array(n), size = new Int32Array(n);
   for (let k = 0; k < n; k++) { label[k] = find(k); size[label[k]]++; }
+  if (tree) { // drawn: the scored links inside each cluster
+    for (let e = 0; e < m; e++) if (app.edgeState[e] !== 1 && label[app.src[e]] === label[app.dst[e]]) kept[e] = 1;
+  }
   for (let k = 0; k < n; k++) size[k] = size[label[k]];
   app.label = label; app.size = size; app.kept = kept;
   let clusters = 0, singletons = 0;
@@ -132,6 +142,16 @@ async function loadState() {
   state.edges.forEach(([s, t, p, st], e) => {
     app.src[e] = s; app.dst[e] = t; app.prob[e] = p; app.edgeState[e] = STATES[st];
   });
+  app.links = null;
+  if (state.links) {
+    const l = state.links.length;
+    app.links = { src: new Int32Array(l), dst: new Int32Array(l), value: new Float64Array(l) };
+    state.links.forEach(([s, t, v], k) => { app.links.src[k] = s; app.links.dst[k] = t; app.links.value[k] = v; });
+  }
+  $("threshold-label").title = state.links
+    ? `Each side's clusters as coindie cluster --auto cuts them at ${state.threshold} (${state.how}); ` +
+      "right: stricter, left: looser"
+    : "Links with a probability above τ count";
   app.nodeIndex = new Map(state.nodes.map((n, k) => [n.id, k]));
   components(); // the reducers read the clusters as soon as the renderer exists
   buildGraph();

@@ -23,7 +23,12 @@ def serve_command(
     host: Annotated[str, typer.Option(help="Address to bind (default: this machine only).")] = "127.0.0.1",
     no_browser: Annotated[bool, typer.Option("--no-browser", help="Do not open a browser.")] = False,
     threshold: Annotated[
-        float | None, typer.Option(help="Start threshold τ (default: the paper's 0.95).")
+        float | None,
+        typer.Option(
+            help="Start at the paper's components of the probabilities above τ. Default: a project opens on "
+            "its clusters as coindie cluster --auto makes them (each side's own cut at the slider's 0.5); "
+            "a graph file at the paper's 0.95."
+        ),
     ] = None,
     edits: Annotated[
         Path | None,
@@ -59,7 +64,7 @@ def serve_command(
     print(url, flush=True)  # the first line: scripts and tests read it
     print(
         f"coindie review of {review.name}: {review.graph.n_nodes} faces, {review.graph.n_edges} links, "
-        f"{review.log.last_seq()} edits in the log; Ctrl-C stops",
+        f"{review.log.last_seq()} edits in the log; start: {review.how}; Ctrl-C stops",
         file=sys.stderr,
         flush=True,
     )

@@ -216,20 +216,37 @@ def corrected_clusters(
     """The die clusters at ``threshold`` once the corrections are applied; ``params``: the method's other
     parameters (the consensus's ``measure``).
 
-    ``components`` keeps the forced links at any τ (even 1); the other methods cluster the corrected
-    graph (forced links at probability 1, cut ones at 0).
+    ``components`` keeps the forced links at any τ (even 1). ``average`` and ``consensus`` cut their tree
+    of the corrected graph (forced links at probability 1, cut ones at 0) as links
+    (:func:`coindie.clustering.merges.merge_links`, no merge carried by a cut pair), then keep the forced
+    links and drop the cut ones as ``components`` does: a split or a move holds whatever the tree. Leiden
+    clusters the corrected graph.
     """
+    from coindie.clustering.merges import LINKAGE_METHODS, merge_links
+
     # the parameters checked by their declarations
     algorithm = get_algorithm(method, threshold=threshold, **params)
     corrected = corrected_graph(graph, corrections)
-    if method != ConnectedComponents.NAME or corrected.n_nodes == 0:
+    n = corrected.n_nodes
+    linkage = method in LINKAGE_METHODS and n >= 2
+    if (method != ConnectedComponents.NAME and not linkage) or n == 0:
         return algorithm.fit(corrected).clustering_
     threshold = algorithm.threshold
+    index = {face: k for k, face in enumerate(corrected.nodes)}
+    if linkage:
+        cut = [(index[a], index[b]) for a, b in corrections.cut if a in index and b in index]
+        links = merge_links(corrected, algorithm, cut)
+        kept = links.kept(threshold)
+        forced = [(index[a], index[b]) for a, b in corrections.forced if a in index and b in index]
+        forced = np.array(forced, np.int64).reshape(-1, 2)
+        i = np.concatenate([links.i[kept], forced[:, 0]])
+        j = np.concatenate([links.j[kept], forced[:, 1]])
+    else:
+        kept = _kept(corrected, corrections, threshold)
+        i, j = corrected.i[kept], corrected.j[kept]
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
 
-    kept = _kept(corrected, corrections, threshold)
-    n = corrected.n_nodes
-    adjacency = coo_matrix((np.ones(int(kept.sum())), (corrected.i[kept], corrected.j[kept])), shape=(n, n))
+    adjacency = coo_matrix((np.ones(len(i)), (i, j)), shape=(n, n))
     raw = connected_components(adjacency, directed=False)[1]
     return Clustering(dict(zip(corrected.nodes, _relabelled(raw), strict=True)), method, float(threshold))

@@ -138,10 +138,19 @@ def create_app(source: ReviewSource, token: str, hosts: set[str] | None = None) 
                 else "auto"
             )
             edges.append([index[a], index[b], round(p, 5), state])
+        links = None
+        if source.cuts:  # the sides' own cuts: the browser cuts their trees' links, not the probabilities
+            found = source.links(corrections)
+            links = [
+                [index[a], index[b], float(v)] for (a, b), v in zip(found.pairs, found.value, strict=True)
+            ]
         return {
             "name": source.name,
             "has_images": source.has_images,
             "threshold": source.threshold,
+            "method": source.method,
+            "how": source.how,
+            "links": links,
             "seq": source.log.last_seq(),
             "nodes": [
                 {
@@ -210,14 +219,19 @@ def create_app(source: ReviewSource, token: str, hosts: set[str] | None = None) 
         return {"edit": _edit_json(edit), "seq": edit.edit_id}
 
     @app.get("/api/clusters")
-    def clusters(threshold: str | None = None, method: str = "components") -> dict[str, Any]:
+    def clusters(threshold: str | None = None, method: str | None = None) -> dict[str, Any]:
+        """The clusters the browser shows at slider value ``threshold``; with ``method``, that method's
+        clusters of the graph at that threshold (the experts' edits applied)."""
         tau = _threshold(threshold, source.threshold)
         corrections = source.corrections()
-        result = corrected_clusters(source.graph, corrections, tau, method)
+        if method is None:
+            result = source.clusters(tau, corrections)
+        else:
+            result = corrected_clusters(source.graph, corrections, tau, method)
         groups = result.clusters()
         return {
             "threshold": tau,
-            "method": method,
+            "method": result.method,
             "seq": source.log.last_seq(),
             "n_clusters": len(groups),
             "n_singletons": sum(len(g) == 1 for g in groups),
@@ -229,7 +243,7 @@ def create_app(source: ReviewSource, token: str, hosts: set[str] | None = None) 
         key = source.face(face)
         tau = _threshold(threshold, source.threshold)
         corrections = source.corrections()
-        labels = corrected_clusters(source.graph, corrections, tau).labels
+        labels = source.clusters(tau, corrections).labels
         members = sorted(f for f, lab in labels.items() if lab == labels[key])
         return {
             "face": key,
@@ -342,7 +356,8 @@ def create_app(source: ReviewSource, token: str, hosts: set[str] | None = None) 
     @app.get("/api/queue")
     def queue(threshold: str | None = None, limit: int = 200) -> dict[str, Any]:
         tau = _threshold(threshold, source.threshold)
-        items = review_queue(source.graph, source.corrections(), tau, limit)
+        corrections = source.corrections()
+        items = review_queue(source.graph, source.links(corrections), corrections, tau, limit)
         return {"threshold": tau, "items": [item.to_dict() for item in items]}
 
     @app.get("/api/export/{name}")
@@ -351,7 +366,7 @@ def create_app(source: ReviewSource, token: str, hosts: set[str] | None = None) 
             raise KeyError(f"no export {name!r}: one of {', '.join(EXPORTS)}")
         tau = _threshold(threshold, source.threshold)
         corrections = source.corrections()
-        text = export(source, corrections, corrected_clusters(source.graph, corrections, tau), name)
+        text = export(source, corrections, source.clusters(tau, corrections), name)
         return Response(
             text, media_type=EXPORTS[name], headers={"Content-Disposition": f'attachment; filename="{name}"'}
         )

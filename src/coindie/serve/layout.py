@@ -1,8 +1,9 @@
 """Node positions for the graph view, computed once on the server (the browser only draws).
 
-Each cluster of the automatic graph (components at the start threshold) is laid out on its own by
-networkx's spring layout (Fruchterman–Reingold) weighted by probability, scaled by the square root of its
-size, and the clusters are packed on rows, largest first, so that they stay apart whatever the slider does.
+Each cluster at the start (:meth:`coindie.serve.source.ReviewSource.clusters`) is laid out on its own by
+networkx's spring layout (Fruchterman–Reingold) of its scored links weighted by probability, scaled by the
+square root of its size, and the clusters are packed on rows, largest first, so that they stay apart
+whatever the slider does.
 """
 
 from __future__ import annotations
@@ -12,26 +13,25 @@ import math
 import networkx as nx
 import numpy as np
 
-from coindie.clustering import ConnectedComponents, ProbabilityGraph
+from coindie.clustering import ProbabilityGraph
 
 #: Empty space between two packed clusters (layout units; a singleton is 1 wide).
 GAP = 0.6
 
 
 def cluster_layout(
-    graph: ProbabilityGraph, threshold: float, seed: int = 0
+    graph: ProbabilityGraph, groups: list[list[str]], seed: int = 0
 ) -> dict[str, tuple[float, float]]:
-    """Face -> (x, y); clusters apart, on rows about as wide as the whole is tall."""
-    groups = (
-        ConnectedComponents(threshold=threshold).fit(graph).clustering_.clusters() if graph.n_nodes else []
-    )
-    kept = graph.probability > threshold
+    """Face -> (x, y) for the faces of ``groups`` (clusters, largest first); clusters apart, on rows about
+    as wide as the whole is tall."""
+    label = {face: k for k, members in enumerate(groups) for face in members}
     g = nx.Graph()
     g.add_nodes_from(graph.nodes)
     names = graph.nodes
     g.add_weighted_edges_from(
         (names[i], names[j], float(p))
-        for i, j, p in zip(graph.i[kept], graph.j[kept], graph.probability[kept], strict=True)
+        for i, j, p in zip(graph.i, graph.j, graph.probability, strict=True)
+        if label.get(names[i], -1) == label.get(names[j], -2)
     )
     blocks = []
     for members in groups:

@@ -1,13 +1,18 @@
 """What the expert should check first: pairs ranked by how uncertain the current clusters are about them.
 
+The clusters are the components of the links the slider cuts at t (:mod:`coindie.serve.cuts`: the
+probabilities at the paper's τ, or the merges of each side's tree, every side's own cut at the start).
 Three kinds of pair, each with an uncertainty in [0, 1]:
 
-- ``near-threshold``: a link whose probability is close to τ (1 at τ, 0 at a distance of ``BAND``);
-- ``bridge``: a kept link whose removal splits its cluster in two (networkx's bridges), the weaker the
-  more uncertain; a cluster held by one weak bridge is the paper's chaining error;
-- ``runner-up``: a singleton's most probable partner, the closer to τ the more uncertain.
+- ``near-threshold``: a link whose value is close to t (1 at t, 0 at a distance of ``BAND``): a
+  probability near τ, or a merge of two groups just above or below the side's cut;
+- ``bridge`` (probability links only): a kept link whose removal splits its cluster in two (networkx's
+  bridges), the weaker the more uncertain; a cluster held by one weak bridge is the paper's chaining
+  error (every merge of a tree is a bridge: there the merges near the cut are the doubtful ones);
+- ``runner-up``: a singleton's strongest link, the closer to t the more uncertain.
 
 Pairs the expert already decided (cut, linked, re-registered) and clusters marked verified are left out.
+Each item carries the pair's probability in the graph under review.
 """
 
 from __future__ import annotations
@@ -17,9 +22,10 @@ from dataclasses import asdict, dataclass
 import networkx as nx
 
 from coindie.clustering import ProbabilityGraph
-from coindie.clustering.corrections import Corrections, corrected_clusters, corrected_graph, kept_links, pair
+from coindie.clustering.corrections import Corrections, corrected_graph, pair
+from coindie.serve.cuts import ReviewLinks, components_at
 
-#: Probability distance from τ at which a link is no longer uncertain.
+#: Distance from t (on the slider's scale) at which a link is no longer uncertain.
 BAND = 0.25
 
 
@@ -37,60 +43,57 @@ class QueueItem:
 
 
 def review_queue(
-    graph: ProbabilityGraph, corrections: Corrections, threshold: float, limit: int = 200
+    graph: ProbabilityGraph, links: ReviewLinks, corrections: Corrections, threshold: float, limit: int = 200
 ) -> list[QueueItem]:
-    """The pairs to check, most uncertain first (one entry per pair: its most uncertain reason)."""
-    corrected = corrected_graph(graph, corrections)
-    clusters = corrected_clusters(graph, corrections, threshold)
+    """The pairs to check, most uncertain first (one entry per pair: its most uncertain reason).
+
+    ``graph``: the graph under review (the items' probabilities); ``links``: what the slider cuts, the
+    edits applied; ``threshold``: the slider's value.
+    """
+    probability = {pair(a, b): p for a, b, p in corrected_graph(graph, corrections).edges()}
+    clusters = components_at(links, threshold, "")
     verified = {f for group in corrections.verified if corrections.is_verified(group) for f in group}
     decided = corrections.cut | corrections.forced | set(corrections.probability)
     items: dict[tuple[str, str], QueueItem] = {}
+    what = "merge" if links.tree else "p"
 
-    def offer(item: QueueItem) -> None:
-        key = pair(item.a, item.b)
-        if key in decided or (item.a in verified and item.b in verified):
+    def offer(a: str, b: str, kind: str, u: float, why: str) -> None:
+        key = pair(a, b)
+        if key in decided or (a in verified and b in verified):
             return
-        if key not in items or items[key].uncertainty < item.uncertainty:
-            items[key] = item
+        if key not in items or items[key].uncertainty < u:
+            items[key] = QueueItem(a, b, probability.get(key, 0.0), kind, u, why)
 
-    for a, b, p in corrected.edges():
-        u = 1.0 - abs(p - threshold) / BAND
+    for (a, b), v in zip(links.pairs, links.value, strict=True):
+        u = 1.0 - abs(v - threshold) / BAND
         if u > 0:
-            side = "above" if p > threshold else "below"
-            offer(QueueItem(a, b, p, "near-threshold", u, f"p = {p:.3f}, just {side} τ = {threshold:.2f}"))
-    kept = kept_links(graph, corrections, threshold)
-    g = nx.Graph()
-    names = corrected.nodes
-    g.add_weighted_edges_from(
-        (names[i], names[j], float(p))
-        for i, j, p, k in zip(corrected.i, corrected.j, corrected.probability, kept, strict=True)
-        if k
-    )
-    for a, b in nx.bridges(g):
-        h = g.copy()
-        h.remove_edge(a, b)
-        small = min(len(nx.node_connected_component(h, a)), len(nx.node_connected_component(h, b)))
-        if small < 2:
-            continue  # a leaf: not a chain between two groups
-        p = g[a][b]["weight"]
-        u = 0.5 + 0.5 * max(0.0, 1.0 - (p - threshold) / max(1.0 - threshold, 1e-6))
-        offer(
-            QueueItem(a, b, p, "bridge", u, f"the only link between two groups ({small}+ faces), p = {p:.3f}")
+            side = "above" if v > threshold else "below"
+            offer(a, b, "near-threshold", u, f"{what} {v:.3f}, just {side} the cut at {threshold:.2f}")
+    if not links.tree:
+        g = nx.Graph()
+        g.add_weighted_edges_from(
+            (a, b, float(v)) for (a, b), v in zip(links.pairs, links.value, strict=True) if v > threshold
         )
+        g.add_weighted_edges_from((a, b, 1.0) for a, b in links.forced)
+        for a, b in nx.bridges(g):
+            h = g.copy()
+            h.remove_edge(a, b)
+            small = min(len(nx.node_connected_component(h, a)), len(nx.node_connected_component(h, b)))
+            if small < 2:
+                continue  # a leaf: not a chain between two groups
+            v = g[a][b]["weight"]
+            u = 0.5 + 0.5 * max(0.0, 1.0 - (v - threshold) / max(1.0 - threshold, 1e-6))
+            offer(a, b, "bridge", u, f"the only link between two groups ({small}+ faces), p = {v:.3f}")
     sizes: dict[int, int] = {}
     for label in clusters.labels.values():
         sizes[label] = sizes.get(label, 0) + 1
     best: dict[str, tuple[float, str]] = {}
-    for a, b, p in corrected.edges():
+    for (a, b), v in zip(links.pairs, links.value, strict=True):
         for x, y in ((a, b), (b, a)):
-            if sizes[clusters.labels[x]] == 1 and p > best.get(x, (-1.0, ""))[0]:
-                best[x] = (p, y)
-    for face, (p, other) in best.items():
-        u = max(0.0, 1.0 - abs(p - threshold) / (2 * BAND))
+            if sizes[clusters.labels[x]] == 1 and v > best.get(x, (-1.0, ""))[0]:
+                best[x] = (float(v), y)
+    for face, (v, other) in best.items():
+        u = max(0.0, 1.0 - abs(v - threshold) / (2 * BAND))
         if u > 0:
-            offer(
-                QueueItem(
-                    face, other, p, "runner-up", u, f"singleton; its best partner {other} has p = {p:.3f}"
-                )
-            )
+            offer(face, other, "runner-up", u, f"singleton; its strongest link, to {other}: {what} {v:.3f}")
     return sorted(items.values(), key=lambda it: (-it.uncertainty, it.a, it.b))[:limit]

@@ -1,8 +1,11 @@
 """What the review app shows: a die-study project (graph, scans, pair transforms) or a bare graph file.
 
-A bare ``graph.json`` (the paper's node-link format) or pairs CSV has no scans: the graph, clusters, edits
-and exports work, the image views say there is no image. Its edit log is a sidecar SQLite file
-(:func:`coindie.project.edits.sidecar_path`) unless another path is given.
+A project opens on the clusters ``coindie cluster --auto`` makes of it, each side cut where its own scores
+say (:mod:`coindie.serve.cuts`), or, given a threshold, on the paper's components at that threshold. A
+bare ``graph.json`` (the paper's node-link format) or pairs CSV opens at a threshold (the paper's 0.95 by
+default) and has no scans: the graph, clusters, edits and exports work, the image views say there is no
+image. Its edit log is a sidecar SQLite file (:func:`coindie.project.edits.sidecar_path`) unless another
+path is given.
 """
 
 from __future__ import annotations
@@ -14,13 +17,15 @@ from typing import Any
 
 import numpy as np
 
-from coindie.clustering import PAPER_THRESHOLD, ProbabilityGraph, read_graph
+from coindie.clustering import PAPER_THRESHOLD, Clustering, ProbabilityGraph, read_graph
+from coindie.clustering.algorithms import ConsensusLinkage
 from coindie.clustering.corrections import Corrections, corrected_graph, pair
 from coindie.errors import CoinDieError
 from coindie.ids import parse_face_id
 from coindie.project import open_project
 from coindie.project.edits import EditLog, sidecar_path
 from coindie.project.store import DB_NAME
+from coindie.serve.cuts import START, ReviewLinks, SideCut, auto_links, components_at, threshold_links
 from coindie.serve.layout import cluster_layout
 
 
@@ -45,7 +50,11 @@ class PairRecord:
 
 @dataclass
 class ReviewSource:
-    """The graph under review, its scans (when any) and its edit log."""
+    """The graph under review, its scans (when any) and its edit log.
+
+    ``cuts``: each side's cut as ``coindie cluster --auto`` makes it, ``graph`` then holding every side's
+    graph; none: the paper's components of ``graph`` at the slider's τ. ``threshold``: the slider's start.
+    """
 
     name: str
     path: Path
@@ -56,15 +65,47 @@ class ReviewSource:
     pairs: dict[tuple[str, str], PairRecord] = field(default_factory=dict)
     sides: dict[str, str] = field(default_factory=dict)
     labels: dict[str, str] = field(default_factory=dict)  # given at init; for evaluation, never shown
+    cuts: list[SideCut] = field(default_factory=list)
+    _links: tuple[int, ReviewLinks] | None = field(default=None, repr=False)
 
     @property
     def has_images(self) -> bool:
         return bool(self.scan_paths)
 
+    @property
+    def method(self) -> str:
+        """The clustering the slider cuts: the sides' own (``coindie cluster --auto``) or components."""
+        return "/".join(sorted({cut.method for cut in self.cuts})) or "components"
+
+    @property
+    def how(self) -> str:
+        """Where the start comes from, in words."""
+        if not self.cuts:
+            return f"components of the probabilities above τ = {self.threshold:g}"
+        return "; ".join(
+            f"{cut.side}: {cut.method} cut at {cut.threshold:.3f} ({cut.how})" for cut in self.cuts
+        )
+
+    def links(self, corrections: Corrections | None = None) -> ReviewLinks:
+        """The links the slider cuts, the log's edits applied (computed again after each edit)."""
+        seq = self.log.last_seq()
+        if self._links is not None and self._links[0] == seq:
+            return self._links[1]
+        if self.cuts:
+            links = auto_links(self.cuts, self.graph.nodes, self.log.edits())
+        else:
+            links = threshold_links(self.graph, self.corrections() if corrections is None else corrections)
+        self._links = (seq, links)
+        return links
+
+    def clusters(self, threshold: float, corrections: Corrections | None = None) -> Clustering:
+        """The current clusters at slider value ``threshold`` (what the browser shows)."""
+        return components_at(self.links(corrections), threshold, self.method)
+
     @cached_property
     def layout(self) -> dict[str, tuple[float, float]]:
-        """Node positions, computed once (clusters of the automatic graph at the start threshold)."""
-        return cluster_layout(self.graph, self.threshold)
+        """Node positions, computed once (the clusters at the start)."""
+        return cluster_layout(self.graph, self.clusters(self.threshold).clusters())
 
     def face(self, face: str) -> str:
         """The canonical key of a face of the graph; ``KeyError`` with a message when it is not one."""
@@ -183,7 +224,12 @@ def open_source(
 
 def _from_project(folder: Path, threshold: float | None) -> ReviewSource:
     project = open_project(folder)
-    graph = project.probability_graph()
+    cuts = [] if threshold is not None else _auto_cuts(project)
+    if cuts:
+        edges = [edge for cut in cuts for edge in cut.graph.edges()]
+        graph = ProbabilityGraph.from_edges(edges, [face for cut in cuts for face in cut.graph.nodes])
+    else:
+        graph = project.probability_graph()
     scans = {s.face_id: s for s in project.scans("ok")}
     pairs: dict[tuple[str, str], PairRecord] = {}
     for row in project.scored_pairs():
@@ -201,11 +247,31 @@ def _from_project(folder: Path, threshold: float | None) -> ReviewSource:
             row.get("histogram"),
             row["origin"] or "automatic",
         )
-    tau = PAPER_THRESHOLD if threshold is None else threshold
+    tau = START if cuts else PAPER_THRESHOLD if threshold is None else threshold
     paths = {face: Path(s.path) for face, s in scans.items()}
     sides = {face: s.side for face, s in scans.items()}
     labels = project.labels()
     project.close()
     return ReviewSource(
-        folder.name, folder.resolve(), graph, EditLog.of_project(folder), tau, paths, pairs, sides, labels
-    )
+        folder.name, folder.resolve(), graph, EditLog.of_project(folder), tau, paths, pairs, sides, labels,
+        cuts,
+    )  # fmt: skip
+
+
+def _auto_cuts(project: Any) -> list[SideCut]:
+    """Each side's cut as ``coindie cluster --auto`` makes it; none before any pair is scored (then the
+    paper's components at its τ)."""
+    scored = project.scored_sides(project.current_params())
+    if not scored:
+        return []
+    cuts = []
+    for side in ("D", "R"):
+        if side not in scored:  # faces of a side not scored yet: alone, as the paper's components leave them
+            graph = project.probability_graph(side)
+            if graph.n_nodes:
+                cuts.append(SideCut(side, graph, "components", PAPER_THRESHOLD, {}, "no pair scored yet"))
+            continue
+        graph, tau, how, params = project.auto_graph(side, ConsensusLinkage.NAME)
+        if graph.n_nodes:
+            cuts.append(SideCut(side, graph, ConsensusLinkage.NAME, tau, params, how))
+    return cuts
