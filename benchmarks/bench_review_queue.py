@@ -1,12 +1,13 @@
 """The review queue against random order: pair checks a simulated expert needs to reach FMI 1.0.
 
-    python benchmarks/bench_review_queue.py PROJECT OUT [--threshold 0.95] [--side D] [--seeds 5]
+    python benchmarks/bench_review_queue.py PROJECT OUT [--threshold 0.95 | --auto] [--side D] [--seeds 5]
 
 PROJECT is a scored project with labels (``coindie demo OUT`` makes one in OUT/project: a synthetic hoard,
 whose labels are the truth). The simulated expert (an oracle reading the true labels) checks one pair at a
 time and records the answer as an edit through the same edit log as the browser: ``link`` when the two faces
-share a die, ``cut`` when not. After each check the clusters are the replay of the log (components at τ),
-scored by FMI against the labels. Orders:
+share a die, ``cut`` when not. After each check the clusters are the replay of the log (components at τ;
+with ``--auto``, the side as ``coindie serve`` opens a project: ``coindie cluster --auto``'s cut of its
+graph, :mod:`coindie.serve.cuts`), scored by FMI against the labels. Orders:
 
 - ``queue``: :func:`coindie.serve.queue.review_queue` recomputed after each answer; when it is empty, the
   other scored pairs, closest to τ first;
@@ -28,31 +29,39 @@ from coindie.clustering import evaluate
 from coindie.clustering.corrections import corrected_clusters, pair
 from coindie.project import open_project
 from coindie.project.edits import EditLog
-from coindie.serve.cuts import threshold_links
+from coindie.serve.cuts import START, SideCut, auto_links, components_at, threshold_links
 from coindie.serve.queue import review_queue
 
 
-def simulate(graph, truth: dict[str, str], tau: float, order: str, seed: int = 0) -> list[float]:  # noqa: ANN001
-    """FMI after 0, 1, 2, ... checks, until 1.0 or every scored pair was checked."""
+def simulate(graph, truth: dict[str, str], tau: float, order: str, seed: int = 0, cut=None) -> list[float]:  # noqa: ANN001
+    """FMI after 0, 1, 2, ... checks, until 1.0 or every scored pair was checked. ``cut``: the side's
+    :class:`~coindie.serve.cuts.SideCut` (the app's start as ``coindie cluster --auto``; ``tau`` is then
+    the slider's value) or None (components at ``tau``)."""
     rng = np.random.default_rng(seed)
     edges = list(graph.edges())
     if order == "random":
         edges = [edges[k] for k in rng.permutation(len(edges))]
     else:
-        edges.sort(key=lambda e: abs(e[2] - tau))
+        edges.sort(key=lambda e: abs(e[2] - (tau if cut is None else cut.threshold)))
     with tempfile.TemporaryDirectory() as folder:
         log = EditLog(Path(folder) / "log.sqlite")
         checked: set[tuple[str, str]] = set()
         curve = []
         while True:
             corrections = log.corrections(graph)
-            fmi = evaluate(corrected_clusters(graph, corrections, tau).labels, truth).scores()["fmi"]
+            if cut is None:
+                links = threshold_links(graph, corrections)
+                clusters = corrected_clusters(graph, corrections, tau)
+            else:
+                links = auto_links([cut], graph.nodes, log.edits())
+                clusters = components_at(links, tau, cut.method)
+            fmi = evaluate(clusters.labels, truth).scores()["fmi"]
             curve.append(float(fmi))
             if fmi >= 1.0 - 1e-12 or len(checked) == len(edges):
                 return curve
             nxt = None
             if order == "queue":
-                items = review_queue(graph, threshold_links(graph, corrections), corrections, tau, limit=1)
+                items = review_queue(graph, links, corrections, tau, limit=1)
                 nxt = (items[0].a, items[0].b) if items else None
             if nxt is None or pair(*nxt) in checked:
                 nxt = next((a, b) for a, b, _ in edges if pair(a, b) not in checked)
@@ -68,19 +77,27 @@ def main() -> None:
     parser.add_argument("project", type=Path)
     parser.add_argument("out", type=Path)
     parser.add_argument("--threshold", type=float, default=0.95)
+    parser.add_argument("--auto", action="store_true", help="start as coindie serve opens a project")
     parser.add_argument("--side", default="D")
     parser.add_argument("--seeds", type=int, default=5)
     args = parser.parse_args()
     project = open_project(args.project)
-    graph = project.probability_graph(args.side)
+    cut = None
+    if args.auto:
+        graph, tau, how, params = project.auto_graph(args.side, "consensus")
+        cut = SideCut(args.side, graph, "consensus", tau, params, how)
+        args.threshold = START
+    else:
+        graph = project.probability_graph(args.side)
     truth = {f: d for f, d in project.labels().items() if f in set(graph.nodes)}
-    queue = simulate(graph, truth, args.threshold, "queue")
-    randoms = [simulate(graph, truth, args.threshold, "random", seed) for seed in range(args.seeds)]
+    queue = simulate(graph, truth, args.threshold, "queue", cut=cut)
+    randoms = [simulate(graph, truth, args.threshold, "random", seed, cut) for seed in range(args.seeds)]
     reached = [len(c) - 1 if c[-1] >= 1.0 - 1e-12 else None for c in randoms]
     result = {
         "project": str(args.project),
         "side": args.side,
         "threshold": args.threshold,
+        "start": "coindie cluster --auto" if cut else "components at the threshold",
         "faces": graph.n_nodes,
         "pairs": graph.n_edges,
         "fmi_start": queue[0],
@@ -104,7 +121,8 @@ def main() -> None:
     ax.plot(queue, color="C3", lw=2, label="review queue")
     ax.set_xlabel("pair checks by the simulated expert")
     ax.set_ylabel("FMI of the corrected clusters")
-    ax.set_title(f"{graph.n_nodes} faces ({args.side}), {graph.n_edges} scored pairs, τ = {args.threshold}")
+    start = "coindie cluster --auto's cut" if cut else f"τ = {args.threshold}"
+    ax.set_title(f"{graph.n_nodes} faces ({args.side}), {graph.n_edges} scored pairs, {start}")
     ax.legend()
     ax.set_xscale("symlog", linthresh=10)
     fig.tight_layout()

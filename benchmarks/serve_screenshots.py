@@ -3,7 +3,8 @@
     python benchmarks/serve_screenshots.py PROJECT docs/images [--threshold 0.5]
 
 PROJECT is a scored project (``coindie demo OUT`` makes one in OUT/project); it is copied first, so its
-edit log is left as it is.
+edit log is left as it is. It opens as ``coindie serve`` opens it: on ``coindie cluster --auto``'s clusters,
+or with ``--threshold``, on the paper's components at τ.
 """
 
 from __future__ import annotations
@@ -22,7 +23,7 @@ def main() -> None:
     )
     parser.add_argument("project", type=Path)
     parser.add_argument("out", type=Path)
-    parser.add_argument("--threshold", type=float, default=0.5)
+    parser.add_argument("--threshold", type=float, default=None)
     args = parser.parse_args()
     from playwright.sync_api import sync_playwright
 
@@ -32,7 +33,8 @@ def main() -> None:
     args.out.mkdir(parents=True, exist_ok=True)
     with tempfile.TemporaryDirectory() as folder:
         project = copy_project(args.project, Path(folder) / "project")
-        with served(project, "--threshold", str(args.threshold)) as url, sync_playwright() as playwright:
+        start = () if args.threshold is None else ("--threshold", str(args.threshold))
+        with served(project, *start) as url, sync_playwright() as playwright:
             browser = playwright.chromium.launch(executable_path=str(CHROMIUM), args=CHROMIUM_ARGS)
             page = browser.new_page(viewport={"width": 1500, "height": 950})
             page.goto(url)
