@@ -2,12 +2,13 @@
 
     python benchmarks/bench_review_queue.py PROJECT OUT [--threshold 0.95 | --auto] [--side D] [--seeds 5]
 
-PROJECT is a scored project with labels (``coindie demo OUT`` makes one in OUT/project: a synthetic hoard,
-whose labels are the truth). The simulated expert (an oracle reading the true labels) checks one pair at a
-time and records the answer as an edit through the same edit log as the browser: ``link`` when the two faces
-share a die, ``cut`` when not. After each check the clusters are the replay of the log (components at τ;
-with ``--auto``, the side as ``coindie serve`` opens a project: ``coindie cluster --auto``'s cut of its
-graph, :mod:`coindie.serve.cuts`), scored by FMI against the labels. Orders:
+PROJECT is a scored project with labels (given at ``coindie init``, or ``--labels CSV``; ``coindie demo
+OUT`` makes one in OUT/project: a synthetic hoard, whose labels are the truth). The simulated expert (an
+oracle reading the true labels) checks one pair at a time and records the answer as an edit through the
+same edit log as the browser: ``link`` when the two faces share a die, ``cut`` when not. After each
+check the clusters are the replay of the log (components at τ; with ``--auto``, the side as ``coindie
+serve`` opens a project: ``coindie cluster --auto``'s cut of its graph, :mod:`coindie.serve.cuts`),
+scored by FMI against the labels. Orders:
 
 - ``queue``: :func:`coindie.serve.queue.review_queue` recomputed after each answer; when it is empty, the
   other scored pairs, closest to τ first;
@@ -25,7 +26,7 @@ from pathlib import Path
 
 import numpy as np
 
-from coindie.clustering import evaluate
+from coindie.clustering import evaluate, read_clusters
 from coindie.clustering.corrections import corrected_clusters, pair
 from coindie.project import open_project
 from coindie.project.edits import EditLog
@@ -78,6 +79,7 @@ def main() -> None:
     parser.add_argument("out", type=Path)
     parser.add_argument("--threshold", type=float, default=0.95)
     parser.add_argument("--auto", action="store_true", help="start as coindie serve opens a project")
+    parser.add_argument("--labels", type=Path, help="the true dies (default: the labels given at init)")
     parser.add_argument("--side", default="D")
     parser.add_argument("--seeds", type=int, default=5)
     args = parser.parse_args()
@@ -89,7 +91,8 @@ def main() -> None:
         args.threshold = START
     else:
         graph = project.probability_graph(args.side)
-    truth = {f: d for f, d in project.labels().items() if f in set(graph.nodes)}
+    labels = read_clusters(args.labels) if args.labels else project.labels()
+    truth = {f: d for f, d in labels.items() if f in set(graph.nodes)}
     queue = simulate(graph, truth, args.threshold, "queue", cut=cut)
     randoms = [simulate(graph, truth, args.threshold, "random", seed, cut) for seed in range(args.seeds)]
     reached = [len(c) - 1 if c[-1] >= 1.0 - 1e-12 else None for c in randoms]

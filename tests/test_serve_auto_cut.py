@@ -115,3 +115,29 @@ def test_review_edits_on_the_auto_cut_agree_with_the_command_line(auto_served, f
     assert len(exported) == sum(len(g) for g in groups)
     queue = client.get("/api/queue", headers=HEADERS).json()["items"]
     assert all(0.0 <= it["uncertainty"] <= 1.0 for it in queue)
+
+
+def test_review_queue_offers_a_weak_singleton_its_die_mates_one_after_another():
+    from coindie.clustering.corrections import Edit, replay
+    from coindie.serve.queue import review_queue
+
+    graph, die = _weak_face_graph()
+    cut = SideCut("D", graph, "consensus", 0.3)  # the first pass's measure: the weak face stays alone
+    offered: list[str] = []
+    edits: list[Edit] = []
+    for k in range(3):
+        links = auto_links([cut], graph.nodes, edits)
+        assert components_at(links, START, "consensus").labels  # every face has a cluster
+        queue = review_queue(graph, links, replay(graph, edits), START)
+        items = [it for it in queue if "L0001D" in (it.a, it.b)]
+        assert items  # the face alone is offered (a merge near the cut, or its best partner left)
+        other = items[0].b if items[0].a == "L0001D" else items[0].a
+        offered.append(other)
+        edits.append(Edit(k + 1, "cut", "L0001D", other))  # the expert says no: the next partner comes
+    assert len(set(offered)) == 3 and all(die[f] == die["L0001D"] for f in offered)
+    # with the slider far right, every face alone is still offered with its most probable partner
+    links = auto_links([cut], graph.nodes, [])
+    strict = components_at(links, 0.95, "consensus")
+    alone = {f for f in graph.nodes if list(strict.labels.values()).count(strict.labels[f]) == 1}
+    queue = review_queue(graph, links, replay(graph, []), 0.95, limit=1000)
+    assert "L0001D" in alone and alone <= {f for it in queue if it.kind == "runner-up" for f in (it.a, it.b)}

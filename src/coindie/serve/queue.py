@@ -9,7 +9,9 @@ Three kinds of pair, each with an uncertainty in [0, 1]:
 - ``bridge`` (probability links only): a kept link whose removal splits its cluster in two (networkx's
   bridges), the weaker the more uncertain; a cluster held by one weak bridge is the paper's chaining
   error (every merge of a tree is a bridge: there the merges near the cut are the doubtful ones);
-- ``runner-up``: a singleton's strongest link, the closer to t the more uncertain.
+- ``runner-up``: a singleton's most probable partner not yet decided, the closer its link to t the more
+  uncertain, and never under :data:`SINGLETON_FLOOR` (each face left alone is offered; when the expert
+  cuts that pair, the next partner is).
 
 Pairs the expert already decided (cut, linked, re-registered) and clusters marked verified are left out.
 Each item carries the pair's probability in the graph under review.
@@ -27,6 +29,11 @@ from coindie.serve.cuts import ReviewLinks, components_at
 
 #: Distance from t (on the slider's scale) at which a link is no longer uncertain.
 BAND = 0.25
+
+#: Least uncertainty of a singleton's most probable partner (times 1 + its probability, so that these
+#: come by probability): every face left alone is offered once, after the pairs near the cut. A weak face
+#: (worn, crusted, a scanner the scorer does not know) scores low with every face, its die-mates first.
+SINGLETON_FLOOR = 0.01
 
 
 @dataclass(frozen=True)
@@ -62,7 +69,7 @@ def review_queue(
         if key in decided or (a in verified and b in verified):
             return
         if key not in items or items[key].uncertainty < u:
-            items[key] = QueueItem(a, b, probability.get(key, 0.0), kind, u, why)
+            items[key] = QueueItem(a, b, probability.get(key, 0.0), kind, float(u), why)
 
     for (a, b), v in zip(links.pairs, links.value, strict=True):
         u = 1.0 - abs(v - threshold) / BAND
@@ -87,13 +94,16 @@ def review_queue(
     sizes: dict[int, int] = {}
     for label in clusters.labels.values():
         sizes[label] = sizes.get(label, 0) + 1
+    value = {key: float(v) for key, v in zip(links.pairs, links.value, strict=True)}
     best: dict[str, tuple[float, str]] = {}
-    for (a, b), v in zip(links.pairs, links.value, strict=True):
+    for (a, b), p in probability.items():
+        if (a, b) in decided:
+            continue
         for x, y in ((a, b), (b, a)):
-            if sizes[clusters.labels[x]] == 1 and v > best.get(x, (-1.0, ""))[0]:
-                best[x] = (float(v), y)
-    for face, (v, other) in best.items():
-        u = max(0.0, 1.0 - abs(v - threshold) / (2 * BAND))
-        if u > 0:
-            offer(face, other, "runner-up", u, f"singleton; its strongest link, to {other}: {what} {v:.3f}")
+            if sizes[clusters.labels[x]] == 1 and p > best.get(x, (-1.0, ""))[0]:
+                best[x] = (p, y)
+    for face, (p, other) in best.items():
+        v = value.get(pair(face, other), 0.0 if links.tree else p)
+        u = max(1.0 - abs(v - threshold) / (2 * BAND), SINGLETON_FLOOR * (1.0 + p))
+        offer(face, other, "runner-up", u, f"singleton; its most probable partner left, {other}: p = {p:.3g}")
     return sorted(items.values(), key=lambda it: (-it.uncertainty, it.a, it.b))[:limit]
