@@ -271,7 +271,14 @@ def _auto_cuts(project: Any) -> list[SideCut]:
             if graph.n_nodes:
                 cuts.append(SideCut(side, graph, "components", PAPER_THRESHOLD, {}, "no pair scored yet"))
             continue
-        graph, tau, how, params = project.auto_graph(side, ConsensusLinkage.NAME)
+        try:
+            graph, tau, how, params = project.auto_graph(side, ConsensusLinkage.NAME)
+        except CoinDieError as error:  # the side still opens, on the paper's components, saying why
+            graph = project.probability_graph(side)
+            cuts.append(
+                SideCut(side, graph, "components", PAPER_THRESHOLD, {}, f"no cut without labels: {error}")
+            )
+            continue
         if graph.n_nodes:
             cuts.append(SideCut(side, graph, ConsensusLinkage.NAME, tau, params, how))
     return cuts
