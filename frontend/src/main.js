@@ -152,6 +152,7 @@ async function loadState() {
     ? `Each side's clusters as coindie cluster --auto cuts them at ${state.threshold} (${state.how}); ` +
       "right: stricter, left: looser"
     : "Links with a probability above τ count";
+  $("threshold-name").textContent = state.links ? "cut" : "τ";
   app.nodeIndex = new Map(state.nodes.map((n, k) => [n.id, k]));
   components(); // the reducers read the clusters as soon as the renderer exists
   buildGraph();
