@@ -86,11 +86,13 @@ def wait_saved(page, before: int) -> None:  # noqa: ANN001
 
 
 def image_spread(page, selector: str) -> float:  # noqa: ANN001
-    """Standard deviation of the opaque pixels of a loaded <img> (0: blank)."""
+    """Standard deviation of the opaque pixels of a loaded <img> (0: blank). The server renders each image
+    from the scans (a neighbour list asks for 24 thumbnails first): on a 2-core machine running other
+    tests beside it, a minute was seen to pass before the pair's images came."""
     page.wait_for_function(
         f"document.querySelector('{selector}').complete && "
         f"document.querySelector('{selector}').naturalWidth > 0",
-        timeout=60000,
+        timeout=180000,
     )
     return page.evaluate(
         """sel => { const img = document.querySelector(sel); const c = document.createElement('canvas');
@@ -207,7 +209,7 @@ def test_e2e_fix_registration_by_picked_points(browser, server):
     page.wait_for_selector("#pair:not([hidden])")
     page.click("#pair-fix")
     for role in ("target", "source"):
-        page.wait_for_function(f"document.querySelector('#pick-{role} img').naturalWidth > 0", timeout=60000)
+        page.wait_for_function(f"document.querySelector('#pick-{role} img').naturalWidth > 0", timeout=180000)
     for (tc, tr), (sc, sr) in zip(target_pixels, source_pixels, strict=True):
         for role, col, row in (("target", tc, tr), ("source", sc, sr)):
             size = page.evaluate(
