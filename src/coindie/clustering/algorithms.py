@@ -27,7 +27,7 @@ face (in the graph's node order) of each cluster.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
@@ -241,13 +241,29 @@ def method_params(method: str, **params: Any) -> dict[str, Any]:
 
 
 def _components(graph: ProbabilityGraph, threshold: float) -> IntArray:
+    kept = graph.probability > threshold
+    return _component_labels(graph.n_nodes, graph.i[kept], graph.j[kept])
+
+
+def _component_labels(n: int, i: IntArray, j: IntArray) -> IntArray:
+    """(n,) component of each of ``n`` nodes joined by the links ``i``–``j`` (scipy's labels)."""
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
 
-    kept = graph.probability > threshold
-    n = graph.n_nodes
-    adjacency = coo_matrix((np.ones(int(kept.sum())), (graph.i[kept], graph.j[kept])), shape=(n, n))
+    adjacency = coo_matrix((np.ones(len(i)), (i, j)), shape=(n, n))
     return connected_components(adjacency, directed=False)[1]
+
+
+def link_components(
+    nodes: Sequence[str], i: IntArray, j: IntArray, method: str, threshold: float
+) -> Clustering:
+    """The clusters that the links ``i``–``j`` (indices into ``nodes``) make: their connected components,
+    labelled 0, 1, ... in order of first appearance in ``nodes``; ``method`` and ``threshold``: what made
+    the links, for the record."""
+    if not nodes:
+        return Clustering({}, method, float(threshold))
+    raw = _component_labels(len(nodes), np.asarray(i, np.int64), np.asarray(j, np.int64))
+    return Clustering(dict(zip(nodes, _relabelled(raw), strict=True)), method, float(threshold))
 
 
 def _average_linkage(graph: ProbabilityGraph, threshold: float) -> IntArray:
@@ -358,6 +374,7 @@ __all__ = [
     "clusters_from_labels",
     "combined",
     "get_algorithm",
+    "link_components",
     "list_algorithms",
     "read_clusters",
     "register_algorithm",

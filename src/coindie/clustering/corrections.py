@@ -28,8 +28,15 @@ from typing import Any
 
 import numpy as np
 
-from coindie.clustering.algorithms import Clustering, ConnectedComponents, _relabelled, get_algorithm
+from coindie.clustering.algorithms import (
+    Clustering,
+    ClusteringAlgorithm,
+    ConnectedComponents,
+    get_algorithm,
+    link_components,
+)
 from coindie.clustering.graph import ProbabilityGraph
+from coindie.clustering.merges import LINKAGE_METHODS, MergeLinks, merge_links
 from coindie.errors import ParameterError
 from coindie.ids import parse_face_id
 
@@ -138,6 +145,18 @@ def replay(graph: ProbabilityGraph, edits: Sequence[Edit]) -> Corrections:
     return result
 
 
+def side_corrections(graph: ProbabilityGraph, edits: Sequence[Edit]) -> Corrections:
+    """The corrections that the log ``edits`` makes to one side's ``graph``.
+
+    A project's log covers both sides of the hoard and a side is clustered alone (a face never links
+    across sides), so each side replays the edits about its own faces only. The command line
+    (:func:`coindie.numismatics.sources.project_dies`) and the review app (:mod:`coindie.serve.cuts`) both
+    call this, so they agree on every side.
+    """
+    on_side = set(graph.nodes)
+    return replay(graph, [e for e in edits if {parse_face_id(f).key for f in e.touched()} <= on_side])
+
+
 def _apply(edit: Edit, result: Corrections, neighbours: Mapping[str, set[str]]) -> None:
     def cut(p: Pair) -> None:
         result.forced.discard(p)
@@ -206,6 +225,17 @@ def _kept(corrected: ProbabilityGraph, corrections: Corrections, threshold: floa
     return ((corrected.probability > threshold) | forced) & ~cut_
 
 
+def corrected_tree_links(
+    corrected: ProbabilityGraph, corrections: Corrections, algorithm: ClusteringAlgorithm
+) -> MergeLinks:
+    """The tree that ``algorithm`` (``average`` or ``consensus``) builds on the corrected graph
+    (:func:`corrected_graph`), as links over its nodes (:func:`coindie.clustering.merges.merge_links`): no
+    merge is carried by a pair the experts cut."""
+    index = {face: k for k, face in enumerate(corrected.nodes)}
+    excluded = [(index[a], index[b]) for a, b in corrections.cut if a in index and b in index]
+    return merge_links(corrected, algorithm, excluded)
+
+
 def corrected_clusters(
     graph: ProbabilityGraph,
     corrections: Corrections,
@@ -218,12 +248,9 @@ def corrected_clusters(
 
     ``components`` keeps the forced links at any τ (even 1). ``average`` and ``consensus`` cut their tree
     of the corrected graph (forced links at probability 1, cut ones at 0) as links
-    (:func:`coindie.clustering.merges.merge_links`, no merge carried by a cut pair), then keep the forced
-    links and drop the cut ones as ``components`` does: a split or a move holds whatever the tree. Leiden
-    clusters the corrected graph.
+    (:func:`corrected_tree_links`), then keep the forced links and drop the cut ones as ``components``
+    does: a split or a move holds whatever the tree. Leiden clusters the corrected graph.
     """
-    from coindie.clustering.merges import LINKAGE_METHODS, merge_links
-
     # the parameters checked by their declarations
     algorithm = get_algorithm(method, threshold=threshold, **params)
     corrected = corrected_graph(graph, corrections)
@@ -232,21 +259,15 @@ def corrected_clusters(
     if (method != ConnectedComponents.NAME and not linkage) or n == 0:
         return algorithm.fit(corrected).clustering_
     threshold = algorithm.threshold
-    index = {face: k for k, face in enumerate(corrected.nodes)}
     if linkage:
-        cut = [(index[a], index[b]) for a, b in corrections.cut if a in index and b in index]
-        links = merge_links(corrected, algorithm, cut)
+        links = corrected_tree_links(corrected, corrections, algorithm)
         kept = links.kept(threshold)
+        index = {face: k for k, face in enumerate(corrected.nodes)}
         forced = [(index[a], index[b]) for a, b in corrections.forced if a in index and b in index]
-        forced = np.array(forced, np.int64).reshape(-1, 2)
-        i = np.concatenate([links.i[kept], forced[:, 0]])
-        j = np.concatenate([links.j[kept], forced[:, 1]])
+        ends = np.array(forced, np.int64).reshape(-1, 2)
+        i = np.concatenate([links.i[kept], ends[:, 0]])
+        j = np.concatenate([links.j[kept], ends[:, 1]])
     else:
         kept = _kept(corrected, corrections, threshold)
         i, j = corrected.i[kept], corrected.j[kept]
-    from scipy.sparse import coo_matrix
-    from scipy.sparse.csgraph import connected_components
-
-    adjacency = coo_matrix((np.ones(len(i)), (i, j)), shape=(n, n))
-    raw = connected_components(adjacency, directed=False)[1]
-    return Clustering(dict(zip(corrected.nodes, _relabelled(raw), strict=True)), method, float(threshold))
+    return link_components(corrected.nodes, i, j, method, threshold)

@@ -62,7 +62,7 @@ def project_dies(
     (:meth:`coindie.project.Project.auto_graph`: ``coindie cluster --auto``), the experts' edits of the
     review app replayed (``coindie.project.edits``)."""
     from coindie.clustering import PAPER_THRESHOLD
-    from coindie.clustering.corrections import corrected_clusters, replay
+    from coindie.clustering.corrections import corrected_clusters, side_corrections
     from coindie.project import open_project
     from coindie.project.edits import EditLog
 
@@ -81,10 +81,7 @@ def project_dies(
                 how = "the paper's" if threshold is None else "given"
             if graph.n_nodes == 0:
                 continue
-            # the log covers both sides: each side replays the edits about its own faces
-            on_side = set(graph.nodes)
-            edits = [e for e in log.edits() if e.touched() <= on_side]
-            clusters = corrected_clusters(graph, replay(graph, edits), tau, method, **params)
+            clusters = corrected_clusters(graph, side_corrections(graph, log.edits()), tau, method, **params)
             labels = {face: f"{side}{label}" for face, label in clusters.labels.items()}
             out[side] = SideDies(side, labels, f"{project.folder} ({method}, threshold {tau:g}, {how})", tau)
     finally:

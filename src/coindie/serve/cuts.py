@@ -27,9 +27,16 @@ import numpy as np
 
 from coindie.arrays import FloatArray
 from coindie.clustering import Clustering, ProbabilityGraph, get_algorithm
-from coindie.clustering.algorithms import _relabelled
-from coindie.clustering.corrections import Corrections, Edit, corrected_graph, pair, replay
-from coindie.clustering.merges import LINKAGE_METHODS, merge_links
+from coindie.clustering.algorithms import link_components
+from coindie.clustering.corrections import (
+    Corrections,
+    Edit,
+    corrected_graph,
+    corrected_tree_links,
+    pair,
+    side_corrections,
+)
+from coindie.clustering.merges import LINKAGE_METHODS
 
 #: Where each side's own cut sits on the slider when the app starts from ``coindie cluster --auto``.
 START = 0.5
@@ -79,25 +86,22 @@ def threshold_links(graph: ProbabilityGraph, corrections: Corrections) -> Review
 
 def auto_links(cuts: Sequence[SideCut], nodes: tuple[str, ...], edits: Sequence[Edit]) -> ReviewLinks:
     """Each side's cut tree, every side's own cut at :data:`START`; ``edits``: the log, each side
-    replaying the edits about its own faces (as :func:`coindie.numismatics.sources.project_dies`)."""
+    replaying the edits about its own faces (:func:`coindie.clustering.corrections.side_corrections`)."""
     pairs: list[Pair] = []
     values: list[FloatArray] = []
     forced: list[Pair] = []
     for cut in cuts:
-        on_side = set(cut.graph.nodes)
-        corrections = replay(cut.graph, [e for e in edits if e.touched() <= on_side])
+        corrections = side_corrections(cut.graph, edits)
         forced += sorted(corrections.forced)
-        corrected = corrected_graph(cut.graph, corrections)
-        names = corrected.nodes
         if cut.method not in LINKAGE_METHODS:  # the paper's components on this side, at its own τ
             side = threshold_links(cut.graph, corrections)
             pairs += side.pairs
             values.append(_on_slider(side.value, cut.threshold, side.value > cut.threshold))
             continue
+        corrected = corrected_graph(cut.graph, corrections)
         algorithm = get_algorithm(cut.method, threshold=cut.threshold, **cut.params)
-        index = {face: k for k, face in enumerate(names)}
-        excluded = [(index[a], index[b]) for a, b in corrections.cut if a in index and b in index]
-        links = merge_links(corrected, algorithm, excluded)
+        links = corrected_tree_links(corrected, corrections, algorithm)
+        names = corrected.nodes
         pairs += [pair(names[i], names[j]) for i, j in zip(links.i, links.j, strict=True)]
         values.append(_on_slider(1.0 - links.distance, cut.threshold, links.kept(cut.threshold)))
     value = np.concatenate(values) if values else np.zeros(0)
@@ -118,19 +122,12 @@ def _on_slider(similarity: FloatArray, threshold: float, kept: np.ndarray) -> Fl
 
 def components_at(links: ReviewLinks, t: float, method: str) -> Clustering:
     """The clusters at slider value ``t``: components of the links above ``t`` and the forced links."""
-    from scipy.sparse import coo_matrix
-    from scipy.sparse.csgraph import connected_components
-
     index = {face: k for k, face in enumerate(links.nodes)}
     kept = [p for p, v in zip(links.pairs, links.value, strict=True) if v > t] + list(links.forced)
     kept = [(a, b) for a, b in kept if a in index and b in index]
-    n = len(links.nodes)
-    if n == 0:
-        return Clustering({}, method, float(t))
     i = np.array([index[a] for a, _ in kept], np.int64)
     j = np.array([index[b] for _, b in kept], np.int64)
-    raw = connected_components(coo_matrix((np.ones(len(kept)), (i, j)), shape=(n, n)), directed=False)[1]
-    return Clustering(dict(zip(links.nodes, _relabelled(raw), strict=True)), method, float(t))
+    return link_components(links.nodes, i, j, method, t)
 
 
 __all__ = [

@@ -266,19 +266,17 @@ def _auto_cuts(project: Any) -> list[SideCut]:
         return []
     cuts = []
     for side in ("D", "R"):
-        if side not in scored:  # faces of a side not scored yet: alone, as the paper's components leave them
-            graph = project.probability_graph(side)
-            if graph.n_nodes:
-                cuts.append(SideCut(side, graph, "components", PAPER_THRESHOLD, {}, "no pair scored yet"))
-            continue
-        try:
-            graph, tau, how, params = project.auto_graph(side, ConsensusLinkage.NAME)
-        except CoinDieError as error:  # the side still opens, on the paper's components, saying why
-            graph = project.probability_graph(side)
-            cuts.append(
-                SideCut(side, graph, "components", PAPER_THRESHOLD, {}, f"no cut without labels: {error}")
-            )
-            continue
+        why = "no pair scored yet"  # its faces alone, as the paper's components leave them
+        if side in scored:
+            try:
+                graph, tau, how, params = project.auto_graph(side, ConsensusLinkage.NAME)
+            except CoinDieError as error:
+                why = f"no cut without labels: {error}"
+            else:
+                if graph.n_nodes:
+                    cuts.append(SideCut(side, graph, ConsensusLinkage.NAME, tau, params, how))
+                continue
+        graph = project.probability_graph(side)  # the side still opens, on the paper's components, saying why
         if graph.n_nodes:
-            cuts.append(SideCut(side, graph, ConsensusLinkage.NAME, tau, params, how))
+            cuts.append(SideCut(side, graph, "components", PAPER_THRESHOLD, {}, why))
     return cuts
