@@ -65,6 +65,12 @@ def test_no_merge_of_the_corrected_tree_is_carried_by_a_cut_pair():
     names = corrected.nodes
     carried = {pair(names[i], names[j]) for i, j in zip(links.i, links.j, strict=True)}
     assert not carried & corrections.cut
+    # two faces whose only pair is cut: their merge has no pair left to carry it, so no link at all
+    two = ProbabilityGraph.from_edges([("L0001D", "L0002D", 0.9)], ["L0001D", "L0002D"])
+    cut = side_corrections(two, [Edit(1, "cut", "L0001D", "L0002D")])
+    for method in ("average", "consensus"):
+        algorithm = get_algorithm(method, threshold=0.5)
+        assert corrected_tree_links(corrected_graph(two, cut), cut, algorithm).i.size == 0, method
     # cut from every face of its cluster, the face leaves it
     after = corrected_clusters(graph, corrections, 0.5, "average")
     assert all(after.labels[big[0]] != after.labels[f] for f in big[1:])
