@@ -8,7 +8,12 @@ import numpy as np
 import pytest
 
 from coindie.clustering import ProbabilityGraph, cluster, evaluate, select_threshold_unsupervised
-from coindie.clustering.consensus import CONSENSUS_THRESHOLD, consensus_graph, consensus_matrix
+from coindie.clustering.consensus import (
+    CONSENSUS_THRESHOLD,
+    consensus_graph,
+    consensus_matrix,
+    light_pair_weight,
+)
 from coindie.errors import ParameterError
 
 
@@ -112,3 +117,54 @@ def test_the_cut_by_silhouette_follows_the_hoard() -> None:
     weak_cut = select_threshold_unsupervised(weak, "consensus").threshold
     assert evaluate(cluster(clean, "consensus", clean_cut).labels, truth).fmi == 1.0
     assert weak_cut < clean_cut
+
+
+def _light_faces_beside_a_die(seed: int, own: tuple[float, float]):
+    """A 6-coin die, a 10-coin die, and three light faces: each linked to the 6-coin die's coins at
+    0.15-0.35 (a die of that design, worn or coarsely scanned), to each other in ``own``, to nothing else:
+    what the independent generator's coarse-7 hoard held (BENCHMARK.md)."""
+    rng = np.random.default_rng(seed)
+    graph, truth = _hoard_graph([6, 10], seed=seed, failed=0.0, weak=(0.8, 0.99))
+    light = ["L0017D", "L0018D", "L0019D"]
+    edges = list(graph.edges())
+    for face in light:
+        for f in truth:
+            edges.append((face, f, rng.uniform(0.15, 0.35) if truth[f] == "D0" else rng.uniform(0.0, 0.02)))
+    edges += [(a, b, rng.uniform(*own)) for a, b in itertools.combinations(light, 2)]
+    return ProbabilityGraph.from_edges(edges, [*truth, *light]), light
+
+
+def test_light_faces_are_not_joined_by_the_links_they_share_with_another_die() -> None:
+    """Three one-coin dies of the 6-coin die's design, linked to each other (0.05-0.12) more weakly than
+    each is to that die's coins. Their rows are light and point the same way, so the rows alone put two
+    of them together (seeds 0-2: what the consensus did before it weighed light pairs by their own link);
+    each stays alone, and off the die."""
+    for seed in range(5):
+        graph, light = _light_faces_beside_a_die(seed, own=(0.05, 0.12))
+        cut = select_threshold_unsupervised(graph, "consensus").threshold
+        labels = cluster(graph, "consensus", cut).labels
+        assert len({labels[face] for face in light}) == 3
+        assert all(labels[face] != labels["L0001D"] for face in light)
+
+
+def test_light_pairs_are_weighed_by_their_own_link_against_their_best() -> None:
+    P = np.eye(4)
+    P[0, 1] = P[1, 0] = 0.1  # two light faces ...
+    P[0, 2] = P[2, 0] = 0.3  # ... each linked more strongly elsewhere
+    P[1, 2] = P[2, 1] = 0.2
+    P[2, 3] = P[3, 2] = 0.9  # a face with a strong link is not light
+    weight = light_pair_weight(P)
+    assert weight[0, 1] == pytest.approx(0.1 / 0.3)
+    assert weight[0, 2] == weight[2, 3] == weight[1, 3] == 1.0
+    assert np.allclose(weight, weight.T) and np.allclose(np.diag(weight), 1.0)
+
+
+def test_light_faces_whose_own_links_are_their_best_are_one_die() -> None:
+    """The same three light faces, now coins of one worn die: their links to each other (0.36-0.45) are
+    their strongest. The consensus joins them, apart from the 6-coin die."""
+    for seed in range(5):
+        graph, light = _light_faces_beside_a_die(seed, own=(0.36, 0.45))
+        cut = select_threshold_unsupervised(graph, "consensus").threshold
+        labels = cluster(graph, "consensus", cut).labels
+        assert len({labels[face] for face in light}) == 1
+        assert labels[light[0]] != labels["L0001D"]
