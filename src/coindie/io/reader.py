@@ -7,6 +7,7 @@ from pathlib import Path
 
 from coindie.errors import ParameterError, ScanReadError
 from coindie.ids import face_id_of
+from coindie.io.orientation import outward_normals
 from coindie.scan import Scan
 
 #: Largest scan file read by default (2 GiB); checked on the file size before any byte is read.
@@ -19,6 +20,9 @@ SCAN_SUFFIXES = (".ply", ".stl", ".obj")
 def read_scan(path: str | Path, *, max_bytes: int = MAX_SCAN_BYTES) -> Scan:
     """Read a scan (PLY point cloud or mesh, STL, OBJ); its id is parsed from the file name.
 
+    Normals whose signs disagree (never oriented, or a mesh wound either way) are turned to point out of
+    the coin (:func:`~coindie.io.orientation.outward_normals`); normals that agree are kept as written.
+
     Raises:
         ScanReadError: the file is missing, not a file, empty, too large, of an unknown format or unreadable.
         InvalidScanError: the file was read but its content is unusable (no points, NaN coordinates, ...).
@@ -29,10 +33,15 @@ def read_scan(path: str | Path, *, max_bytes: int = MAX_SCAN_BYTES) -> Scan:
     if suffix == ".ply":
         from coindie.io.ply import read_ply
 
-        return read_ply(path, face_id)
-    from coindie.io.mesh import read_mesh  # imports trimesh (~0.5 s): only when a mesh is read
+        scan = read_ply(path, face_id)
+    else:
+        from coindie.io.mesh import read_mesh  # imports trimesh (~0.5 s): only when a mesh is read
 
-    return read_mesh(path, face_id)
+        scan = read_mesh(path, face_id)
+    if scan.normals is None:
+        return scan
+    normals = outward_normals(scan.points, scan.normals)
+    return scan if normals is scan.normals else scan.with_normals(normals)
 
 
 def is_scan_name(path: Path) -> bool:

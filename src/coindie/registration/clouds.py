@@ -69,13 +69,16 @@ def canonical_order(scan: Scan) -> Scan:
 
 
 def with_normals(scan: Scan) -> Scan:
-    """The scan itself if it has normals; otherwise normals by local PCA, turned to the face's up side."""
+    """The scan itself if it has normals; otherwise normals by local PCA, turned out of the coin: up on
+    the side the face's geometry says is up (its edge wall below, its relief raised:
+    :func:`~coindie.io.orientation.face_up`), not the scanner's +z, which a scan in any pose does not keep."""
     if scan.normals is not None:
         return scan
+    from coindie.io.orientation import face_up, turned_away_from_below
     from coindie.preprocess.normals import estimate_normals
-    from coindie.preprocess.orientation import up_axis
 
-    return scan.with_normals(estimate_normals(scan.points, toward=up_axis(scan.points)))
+    unsigned = estimate_normals(scan.points)
+    return scan.with_normals(turned_away_from_below(scan.points, unsigned, face_up(scan.points, unsigned)))
 
 
 def content_key(*arrays: FloatArray) -> bytes:

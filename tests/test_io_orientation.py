@@ -1,0 +1,124 @@
+"""Normals whose signs mean nothing (never oriented, a mesh wound either way) are read pointing out of the
+coin, and a scan without normals gets outward ones, whatever the pose the scan was written in."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+from scipy.spatial.transform import Rotation
+
+from coindie.io import read_ply, read_scan, write_ply
+from coindie.io.orientation import sign_agreement, up_evidence
+from coindie.registration.clouds import with_normals
+from coindie.scan import Scan
+
+
+def _turned_over(scan: Scan, seed: int) -> Scan:
+    """The scan in a random pose whose face looks down (the scanner's +z is no guide to its up side)."""
+    rng = np.random.default_rng(seed)
+    turn = Rotation.from_rotvec([np.pi, 0.0, 0.0]) * Rotation.random(random_state=rng)
+    R = turn.as_matrix()
+    up = R @ np.array([0.0, 0.0, 1.0])
+    if up[2] > 0:  # turn it over again about x: the face then looks down
+        R = Rotation.from_rotvec([np.pi, 0.0, 0.0]).as_matrix() @ R
+    points = scan.points @ R.T + rng.uniform(-50.0, 50.0, 3)
+    assert scan.normals is not None
+    return Scan(points=points, normals=scan.normals @ R.T, id=scan.id)
+
+
+def _agreement(normals: np.ndarray, truth: np.ndarray) -> float:
+    return float(np.mean(np.einsum("ij,ij->i", normals, truth) > 0))
+
+
+@pytest.fixture(scope="module")
+def faces(training_hoard: Path) -> list[Scan]:
+    """Four faces of a synthetic hoard (with their edge wall), each in a pose that turns it face down."""
+    paths = sorted(training_hoard.glob("*.ply"))[:4]
+    return [_turned_over(read_scan(path), seed) for seed, path in enumerate(paths)]
+
+
+def test_normals_that_agree_are_read_as_written_unless_all_point_into_the_coin(
+    faces: list[Scan], tmp_path: Path
+) -> None:
+    """Outward normals come back exactly as written (a scanner's consistent normals are not second-guessed);
+    the same normals all turned inwards (a mesh wound inside out) come back all turned out again."""
+    for i, scan in enumerate(faces):
+        assert scan.normals is not None
+        for sign in (1.0, -1.0):
+            written = Scan(points=scan.points, normals=sign * scan.normals, id=scan.id)
+            path = write_ply(tmp_path / f"L000{i + 1}D.ply", written, dtype=np.float64)
+            np.testing.assert_allclose(read_scan(path).normals, sign * read_ply(path).normals, atol=1e-12)
+
+
+def test_normals_of_random_sign_are_read_pointing_out_of_the_coin(faces: list[Scan], tmp_path: Path) -> None:
+    """Each normal's sign drawn at random (local PCA never oriented), the face looking down: on reading,
+    the normals point out of the coin again, up on the face and outwards on its wall."""
+    rng = np.random.default_rng(7)
+    for i, scan in enumerate(faces):
+        assert scan.normals is not None
+        signs = rng.choice([-1.0, 1.0], size=(scan.n_points, 1))
+        written = Scan(points=scan.points, normals=signs * scan.normals, id=scan.id)
+        assert sign_agreement(written.points, written.normals) < 0.6
+        read = read_scan(write_ply(tmp_path / f"L000{i + 1}D.ply", written, dtype=np.float64))
+        assert read.normals is not None
+        assert _agreement(read.normals, scan.normals) > 0.99
+
+
+def test_a_scan_without_normals_gets_outward_ones_in_any_pose(faces: list[Scan]) -> None:
+    """Normals estimated by local PCA are turned by the face's geometry (its wall below, its relief
+    raised), not to the scanner's +z side, which a face looking down does not keep."""
+    for scan in faces:
+        assert scan.normals is not None
+        estimated = with_normals(Scan(points=scan.points, id=scan.id))
+        assert estimated.normals is not None
+        assert _agreement(estimated.normals, scan.normals) > 0.97
+
+
+def test_both_cues_point_up_and_the_relief_decides_without_a_wall(faces: list[Scan]) -> None:
+    """The wall lies below the face's surface and the relief's heights lean upwards; a face cut inside
+    its outline (no wall) is still told up from down by its relief."""
+    for scan in faces:
+        assert scan.normals is not None
+        true_up = scan.normals.mean(axis=0)
+        evidence = up_evidence(scan.points, scan.normals)
+        assert evidence.cue == "wall"
+        assert evidence.sign * evidence.axis @ true_up > 0
+        assert evidence.relief_skewness * evidence.axis @ true_up > 0
+        centred = scan.points - scan.points.mean(axis=0)
+        across = np.linalg.norm(centred - np.outer(centred @ evidence.axis, evidence.axis), axis=1)
+        inner = across < 0.7 * across.max()
+        cropped = up_evidence(scan.points[inner], scan.normals[inner])
+        assert cropped.cue == "relief"
+        assert cropped.sign * cropped.axis @ true_up > 0
+
+
+def test_a_mesh_wound_either_way_is_read_with_outward_normals(tmp_path: Path) -> None:
+    """An STL whose triangles on one half of the face are wound the other way (a mesh stitched from two
+    scans): the vertex normals of that half point into the coin as written, out of it as read."""
+    import trimesh
+
+    from synthetic_pairs import random_relief
+
+    relief = random_relief(3)
+    axis = np.arange(-8.0, 8.0 + 1e-9, 0.1)
+    x, y = np.meshgrid(axis, axis)
+    inside = (x**2 + y**2 <= 64.0).ravel()
+    xy = np.column_stack([x.ravel(), y.ravel()])
+    vertices = np.column_stack([xy, relief.height(xy)])
+    index = np.arange(len(axis) ** 2).reshape(len(axis), len(axis))
+    a, b = index[:-1, :-1].ravel(), index[:-1, 1:].ravel()
+    c, d = index[1:, :-1].ravel(), index[1:, 1:].ravel()
+    triangles = np.concatenate([np.column_stack([a, b, d]), np.column_stack([a, d, c])])
+    triangles = triangles[inside[triangles].all(axis=1)]
+    flipped = vertices[triangles, 0].mean(axis=1) > 0
+    triangles[flipped] = triangles[flipped][:, ::-1]
+    R = Rotation.from_rotvec([2.5, 0.4, 0.0]).as_matrix()  # the face looks down
+    mesh = trimesh.Trimesh(vertices @ R.T, triangles, process=False)
+    path = tmp_path / "L0001D.stl"
+    mesh.export(path)
+    read = read_scan(path)
+    assert read.normals is not None
+    truth = relief.normals((read.points @ R)[:, :2]) @ R.T  # the points back in the face's frame
+    assert _agreement(read.normals, truth) > 0.99
