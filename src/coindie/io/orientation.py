@@ -29,6 +29,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+from numpy.typing import NDArray
 
 from coindie.arrays import FloatArray
 
@@ -63,15 +64,42 @@ class UpEvidence:
     relief_skewness: float  # quartile skewness (10th-50th-90th percentiles) of the face's heights
 
 
+@dataclass(frozen=True)
+class _FaceSample:
+    """A regular subsample of a scan (at most ``_SAMPLE`` points), centred, with its principal axes:
+    what every question of this module is asked of, computed once per scan."""
+
+    centred: FloatArray
+    normals: FloatArray
+    spreads: FloatArray  # eigenvalues of the scatter, ascending
+    vectors: FloatArray  # their eigenvectors (columns): the face's axis first
+
+    @classmethod
+    def of(cls, points: FloatArray, normals: FloatArray) -> _FaceSample:
+        sample = np.arange(0, len(points), max(1, -(-len(points) // _SAMPLE)))
+        centred = points[sample] - points[sample].mean(axis=0)
+        spreads, vectors = np.linalg.eigh(centred.T @ centred)
+        return cls(centred, normals[sample], spreads, vectors)
+
+    @property
+    def axis(self) -> FloatArray:
+        return self.vectors[:, 0]
+
+    def facing(self) -> NDArray[np.bool_]:
+        """The points whose normal (either sign) is within ``FACE_ANGLE_DEG`` of the axis."""
+        return np.abs(self.normals @ self.axis) >= np.cos(np.radians(FACE_ANGLE_DEG))
+
+
 def up_evidence(points: FloatArray, normals: FloatArray) -> UpEvidence:
     """The up side of a face scan from its geometry; ``normals`` are read without their signs."""
-    sample = np.arange(0, len(points), max(1, -(-len(points) // _SAMPLE)))
-    p, n = points[sample], normals[sample]
-    centred = p - p.mean(axis=0)
-    _, vectors = np.linalg.eigh(centred.T @ centred)
-    axis, across, along = vectors[:, 0], vectors[:, 1], vectors[:, 2]
-    height, x, y = centred @ axis, centred @ along, centred @ across
-    face = np.abs(n @ axis) >= np.cos(np.radians(FACE_ANGLE_DEG))
+    return _evidence(_FaceSample.of(points, normals))
+
+
+def _evidence(sample: _FaceSample) -> UpEvidence:
+    axis = sample.axis
+    height = sample.centred @ axis
+    x, y = sample.centred @ sample.vectors[:, 2], sample.centred @ sample.vectors[:, 1]
+    face = sample.facing()
     if np.count_nonzero(face) < _MIN_FACE_POINTS:
         return UpEvidence(axis, 0, "none", 0.0, 0.0)
     # the face's surface: a quadric (cupping, doming) fitted to the face points, the relief's outliers
@@ -88,8 +116,8 @@ def up_evidence(points: FloatArray, normals: FloatArray) -> UpEvidence:
     q10, q50, q90 = np.percentile(residual[face], [10, 50, 90])
     skewness = float(((q90 - q50) - (q50 - q10)) / max(q90 - q10, 1e-12))
     # the wall: points not facing along the axis at the outline (steep relief inside it is not the wall)
-    across = np.hypot(x, y)
-    wall = ~face & (across >= _WALL_RING * np.percentile(across, 99))
+    radial = np.hypot(x, y)
+    wall = ~face & (radial >= _WALL_RING * np.percentile(radial, 99))
     offset = float(np.median(residual[wall])) / spread if wall.any() else 0.0
     if wall.mean() >= _MIN_WALL_SHARE and abs(offset) >= _MIN_WALL_OFFSET:
         return UpEvidence(axis, -int(np.sign(offset)), "wall", offset, skewness)
@@ -98,29 +126,31 @@ def up_evidence(points: FloatArray, normals: FloatArray) -> UpEvidence:
     return UpEvidence(axis, 0, "none", offset, skewness)
 
 
+def _up(evidence: UpEvidence) -> FloatArray:
+    """The unit up direction the evidence gives: the scanner's +z side when it says nothing (as for a
+    scan without normals, :func:`coindie.preprocess.orientation.up_axis`)."""
+    sign = evidence.sign if evidence.sign != 0 else (1 if evidence.axis[2] >= 0 else -1)
+    return sign * evidence.axis
+
+
 def sign_agreement(points: FloatArray, normals: FloatArray) -> float:
     """Share of the face's normals (within ``FACE_ANGLE_DEG`` of its axis) on their majority side: 1 for
     normals that all point one way, about 0.5 for signs drawn at random; 1 when the cloud is no face (too
     few points facing along its axis, or not flat)."""
-    side = _normals_side(points, normals)
-    return 1.0 if side is None else side[1]
+    side = _normals_side(_FaceSample.of(points, normals))
+    return 1.0 if side is None else side[0]
 
 
-def _normals_side(points: FloatArray, normals: FloatArray) -> tuple[FloatArray, float, int] | None:
-    """The face's axis, the share of its normals on their majority side and that side (+1: the axis),
-    or None when the cloud is no face."""
-    sample = np.arange(0, len(points), max(1, -(-len(points) // _SAMPLE)))
-    p, n = points[sample], normals[sample]
-    centred = p - p.mean(axis=0)
-    spreads, vectors = np.linalg.eigh(centred.T @ centred)
-    if spreads[0] > _MAX_THICKNESS**2 * spreads[1]:  # not flat: nothing to tell up from down
+def _normals_side(sample: _FaceSample) -> tuple[float, int] | None:
+    """The share of the face's normals on their majority side and that side (+1: the axis), or None when
+    the cloud is no face."""
+    if sample.spreads[0] > _MAX_THICKNESS**2 * sample.spreads[1]:  # not flat: no up or down to tell
         return None
-    along = n @ vectors[:, 0]
-    face = np.abs(along) >= np.cos(np.radians(FACE_ANGLE_DEG))
+    face = sample.facing()
     if np.count_nonzero(face) < _MIN_FACE_POINTS:
         return None
-    up = float(np.mean(along[face] > 0))
-    return vectors[:, 0], max(up, 1.0 - up), 1 if up >= 0.5 else -1
+    up = float(np.mean(sample.normals[face] @ sample.axis > 0))
+    return max(up, 1.0 - up), 1 if up >= 0.5 else -1
 
 
 def outward_normals(points: FloatArray, normals: FloatArray) -> FloatArray:
@@ -128,34 +158,33 @@ def outward_normals(points: FloatArray, normals: FloatArray) -> FloatArray:
 
     Normals that agree (at least ``CONSISTENT`` of the face's on one side) are returned as they are, unless
     both cues of :func:`up_evidence` say they all point into the coin (the wall above the face, and the
-    relief leaning downwards): they are then
-    all turned (a mesh wound inside out; a hoard from two scanners of opposite conventions would otherwise
-    hold faces seen from behind, mirror images of their dies). Normals that disagree are set by
-    :func:`face_up` (the scanner's +z side when the geometry says nothing, as for a scan without normals):
-    each is turned away from a point two radii below the face's centre, up on the face, outwards on the
-    wall, whatever the cupping."""
-    side = _normals_side(points, normals) if len(points) else None
+    relief leaning downwards): they are then all turned (a mesh wound inside out; a hoard from two
+    scanners of opposite conventions would otherwise hold faces seen from behind, mirror images of their
+    dies). Normals that disagree are set by :func:`face_up` (the scanner's +z side when the geometry says
+    nothing, as for a scan without normals): each is turned away from a point two radii below the face's
+    centre, up on the face, outwards on the wall, whatever the cupping."""
+    if len(points) == 0:
+        return normals
+    sample = _FaceSample.of(points, normals)
+    side = _normals_side(sample)
     if side is None:
         return normals
-    axis, agreement, normals_side = side
-    evidence = up_evidence(points, normals)
+    agreement, normals_side = side
+    evidence = _evidence(sample)
     if agreement >= CONSISTENT:
         inside_out = (
             evidence.cue == "wall"
             and np.sign(evidence.relief_skewness) == evidence.sign
-            and evidence.sign * (evidence.axis @ axis) * normals_side < 0
+            and evidence.sign * normals_side < 0
         )
         return -normals if inside_out else normals
-    sign = evidence.sign if evidence.sign != 0 else (1 if evidence.axis[2] >= 0 else -1)
-    return turned_away_from_below(points, normals, sign * evidence.axis)
+    return turned_away_from_below(points, normals, _up(evidence))
 
 
 def face_up(points: FloatArray, normals: FloatArray) -> FloatArray:
     """The face's up direction (unit): the smallest principal axis turned to the side its geometry says
     (:func:`up_evidence`), or to the scanner's +z side when the geometry says nothing."""
-    evidence = up_evidence(points, normals)
-    sign = evidence.sign if evidence.sign != 0 else (1 if evidence.axis[2] >= 0 else -1)
-    return sign * evidence.axis
+    return _up(up_evidence(points, normals))
 
 
 def turned_away_from_below(points: FloatArray, normals: FloatArray, up: FloatArray) -> FloatArray:
