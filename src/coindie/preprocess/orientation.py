@@ -5,27 +5,46 @@ from __future__ import annotations
 import numpy as np
 
 from coindie.arrays import FloatArray
+from coindie.io.orientation import face_up
+from coindie.preprocess.normals import estimate_normals
 from coindie.scan import Scan
 from coindie.transforms import rigid, rotation_between
 
 _Z = np.array([0.0, 0.0, 1.0])
 #: A mean normal shorter than this is no guide to which side is up (normals cancel out).
 _MIN_MEAN_NORMAL = 1e-3
+#: Without normals, the up side is read from the geometry of a regular subsample of this many points
+#: at most (with normals estimated on it): enough for the edge wall and the relief's skewness.
+_GEOMETRY_SAMPLE = 60_000
+#: Fewer points than this carry no geometry worth reading: the scanner's +z side is kept.
+_MIN_GEOMETRY_POINTS = 100
 
 
 def up_axis(points: FloatArray, normals: FloatArray | None = None) -> FloatArray:
     """The unit direction of the smallest principal axis, pointing to the face's up side.
 
-    Up is the side of the mean normal when there are normals; without normals (or when they cancel
-    out) the axis is kept in the scanner's +z hemisphere, since scanners look at the face from above.
+    Up is the side of the mean normal when there are normals. Without normals (or when they cancel
+    out) it is the side the face's geometry says (:func:`coindie.io.orientation.face_up`: the edge wall
+    below the face, the relief raised), not the scanner's +z: a scan written in any pose does not keep
+    it. The scanner's +z side is kept only where the geometry says nothing (too few points, no wall
+    and a symmetric relief).
     """
     centred = points - points.mean(axis=0)
     _, vectors = np.linalg.eigh(centred.T @ centred)
     axis = vectors[:, 0]
-    reference = _Z if normals is None else normals.mean(axis=0)
-    if np.linalg.norm(reference) < _MIN_MEAN_NORMAL:
-        reference = _Z
+    reference = None if normals is None else normals.mean(axis=0)
+    if reference is None or np.linalg.norm(reference) < _MIN_MEAN_NORMAL:
+        reference = _geometric_up(points)
     return axis if axis @ reference >= 0 else -axis
+
+
+def _geometric_up(points: FloatArray) -> FloatArray:
+    """The face's up direction from its geometry alone (normals estimated by local PCA on a regular
+    subsample, their signs unused); the scanner's +z for clouds too small to read."""
+    if len(points) < _MIN_GEOMETRY_POINTS:
+        return _Z
+    sample = points[:: max(1, -(-len(points) // _GEOMETRY_SAMPLE))]
+    return face_up(sample, estimate_normals(sample))
 
 
 def pca_transform(points: FloatArray, normals: FloatArray | None = None) -> FloatArray:
