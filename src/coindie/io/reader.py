@@ -3,11 +3,13 @@
 from __future__ import annotations
 
 import os
+from dataclasses import replace
 from pathlib import Path
 
 from coindie.errors import ParameterError, ScanReadError
 from coindie.ids import face_id_of
 from coindie.io.orientation import outward_normals
+from coindie.io.units import in_millimetres
 from coindie.scan import Scan
 
 #: Largest scan file read by default (2 GiB); checked on the file size before any byte is read.
@@ -19,6 +21,9 @@ SCAN_SUFFIXES = (".ply", ".stl", ".obj")
 
 def read_scan(path: str | Path, *, max_bytes: int = MAX_SCAN_BYTES) -> Scan:
     """Read a scan (PLY point cloud or mesh, STL, OBJ); its id is parsed from the file name.
+
+    Coordinates written in metres or micrometres (a face 0.02 or 20,000 units across) are read in
+    millimetres (:mod:`coindie.io.units`), with a warning naming the file.
 
     Normals whose signs disagree (never oriented, or a mesh wound either way) are turned to point out of
     the coin (:func:`~coindie.io.orientation.outward_normals`); normals that agree are kept as written.
@@ -38,6 +43,9 @@ def read_scan(path: str | Path, *, max_bytes: int = MAX_SCAN_BYTES) -> Scan:
         from coindie.io.mesh import read_mesh  # imports trimesh (~0.5 s): only when a mesh is read
 
         scan = read_mesh(path, face_id)
+    points, unit = in_millimetres(scan.points, path)
+    if unit != "mm":
+        scan = replace(scan, points=points)
     if scan.normals is None:
         return scan
     normals = outward_normals(scan.points, scan.normals)

@@ -1,0 +1,69 @@
+"""Scans written in metres or micrometres, read in millimetres.
+
+coindie works in millimetres, and so do most coin scanners. But a mesh exported from a CAD or 3D tool is
+often written in metres (a 20 mm coin 0.02 wide), and a profilometer or a confocal microscope may write
+micrometres. Read as millimetres, such a face is 1,000 times too small or too large: every length of the
+pipeline (the 0.1 mm grid, the height-map pixels, the search reach) is then wrong by that factor, and the
+pipeline fails far from the cause (a cloud of one point after grid sampling).
+
+A coin's size tells these units apart without doubt: a coin face is 2-200 mm across (the smallest Greek
+fractions are about 5 mm, the largest medallions about 70 mm), so of millimetres, metres and micrometres,
+which are 1,000 times apart, at most one unit puts a face within those bounds. That unit is the file's.
+Centimetres and inches are not guessed: a face 0.8 units wide may be 8 mm or 20 mm across.
+"""
+
+from __future__ import annotations
+
+import logging
+
+import numpy as np
+
+from coindie.arrays import FloatArray
+
+#: Millimetres per unit of each unit a scan can be written in.
+MM_PER_UNIT = {"mm": 1.0, "m": 1000.0, "um": 0.001}
+#: Sizes of a coin face in millimetres (across, the largest extent of the scan): the bounds of the units'
+#: test. Wide enough for any coin; a factor of 1,000 narrower than the units' spacing.
+COIN_SIZE_MM = (2.0, 200.0)
+#: Points the size is measured on (a regular subsample).
+_SAMPLE = 20_000
+#: The size is the extent between these percentiles along each axis (a few stray points do not count).
+_PERCENTILES = (0.5, 99.5)
+
+_log = logging.getLogger(__name__)
+
+
+def face_size(points: FloatArray) -> float:
+    """The face's size in the file's units: the largest of its extents along the three axes, each between
+    the 0.5th and 99.5th percentiles of the coordinates (0 for an empty cloud)."""
+    if len(points) == 0:
+        return 0.0
+    sample = points[:: max(1, -(-len(points) // _SAMPLE))]
+    low, high = np.percentile(sample, _PERCENTILES, axis=0)
+    return float(np.max(high - low))
+
+
+def file_unit(points: FloatArray) -> str:
+    """The unit of ``MM_PER_UNIT`` in which the face's size is a coin's (``COIN_SIZE_MM``); "mm" when none
+    is (a fragment, a test cloud: read as written)."""
+    size = face_size(points)
+    for unit, mm in MM_PER_UNIT.items():
+        if COIN_SIZE_MM[0] <= size * mm <= COIN_SIZE_MM[1]:
+            return unit
+    return "mm"
+
+
+def in_millimetres(points: FloatArray, source: object = None) -> tuple[FloatArray, str]:
+    """``points`` in millimetres, and the unit they were found in (:func:`file_unit`). ``source`` (a
+    path) names the scan in the warning logged when the points are rescaled."""
+    unit = file_unit(points)
+    if unit == "mm":
+        return points, unit
+    _log.warning(
+        "%s: a face %.4g wide is no coin in millimetres; read as %s (x %g to mm)",
+        source if source is not None else "scan",
+        face_size(points),
+        "metres" if unit == "m" else "micrometres",
+        MM_PER_UNIT[unit],
+    )
+    return points * MM_PER_UNIT[unit], unit
