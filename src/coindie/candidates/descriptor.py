@@ -37,6 +37,11 @@ from coindie.scan import Scan
 
 #: Bumped whenever the descriptor's computation changes, so that cached descriptors are recomputed.
 DESCRIPTOR_VERSION = 1
+#: The relief image's band (the sigma of the Gaussian taken off the heights, mm): that of the candidate
+#: recall measured in BENCHMARK.md ("Candidate search"). The ``relief`` method's own turn sweep has since
+#: moved to a finer band (0.4 mm), where its poses are better; what the finer band does to the candidates'
+#: recall has not been measured, so the descriptor keeps its own.
+DESCRIPTOR_HIGH_PASS_MM = 0.8
 
 
 @dataclass(frozen=True)
@@ -109,10 +114,11 @@ def _band_edges(n_radii: int, n_bands: int) -> list[int]:
 
 def face_descriptor(scan: Scan, settings: DescriptorSettings | None = None) -> NDArray[np.float32]:
     """The descriptor of a face (grid-sampled at 0.1 mm, as the ``relief`` method registers it): its relief
-    image made exactly as the ``relief`` method makes it, then :func:`relief_descriptor`."""
+    image made as the ``relief`` method makes it, in the band of :data:`DESCRIPTOR_HIGH_PASS_MM`, then
+    :func:`relief_descriptor`."""
     from coindie.registration import get_method
     from coindie.registration.clouds import Cloud
 
-    pipeline = get_method("relief")
+    pipeline = get_method("relief", **{"relief.high_pass": DESCRIPTOR_HIGH_PASS_MM})
     prepared = pipeline.estimator.prepare(Cloud.canonical(scan))  # type: ignore[attr-defined]
     return relief_descriptor(prepared.image.detail, prepared.image.mask, settings)

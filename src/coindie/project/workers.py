@@ -40,7 +40,9 @@ if TYPE_CHECKING:
 #: Version of the pair function's own code (bump when a change alters results: the pairs are redone).
 PAIR_FUNCTION_VERSION = 2
 #: Version of the per-face work (bump when a change alters the cache: faces are prepared again).
-FACE_WORK_VERSION = 2  # 2: normals whose signs disagree are turned out of the coin on reading
+#: 2: normals whose signs disagree are turned out of the coin on reading; 3: scans in metres or micrometres
+#: are read in millimetres.
+FACE_WORK_VERSION = 3
 
 
 @dataclass(frozen=True)
