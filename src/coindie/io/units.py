@@ -46,7 +46,11 @@ def face_size(points: FloatArray) -> float:
 def file_unit(points: FloatArray) -> str:
     """The unit of ``MM_PER_UNIT`` in which the face's size is a coin's (``COIN_SIZE_MM``); "mm" when none
     is (a fragment, a test cloud: read as written)."""
-    size = face_size(points)
+    return _unit_of(face_size(points))
+
+
+def _unit_of(size: float) -> str:
+    """:func:`file_unit` of a face ``size`` units across."""
     for unit, mm in MM_PER_UNIT.items():
         if COIN_SIZE_MM[0] <= size * mm <= COIN_SIZE_MM[1]:
             return unit
@@ -56,13 +60,14 @@ def file_unit(points: FloatArray) -> str:
 def in_millimetres(points: FloatArray, source: object = None) -> tuple[FloatArray, str]:
     """``points`` in millimetres, and the unit they were found in (:func:`file_unit`). ``source`` (a
     path) names the scan in the warning logged when the points are rescaled."""
-    unit = file_unit(points)
+    size = face_size(points)
+    unit = _unit_of(size)
     if unit == "mm":
         return points, unit
     _log.warning(
         "%s: a face %.4g wide is no coin in millimetres; read as %s (x %g to mm)",
         source if source is not None else "scan",
-        face_size(points),
+        size,
         "metres" if unit == "m" else "micrometres",
         MM_PER_UNIT[unit],
     )
