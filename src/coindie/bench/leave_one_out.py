@@ -106,7 +106,7 @@ def train_on_project(project: Any, hoard: Path, *, like: Any) -> tuple[Any, int,
             continue
         X.append(np.asarray(features, dtype=np.float64))
         y.append(truth[pair["source"]] == truth[pair["target"]])
-    model = ReliefClassifier(C=like.C, features=like.features, settings=like.settings)
+    model = ReliefClassifier(C=like.C, features=like.features, used=like.used, settings=like.settings)
     model.fit(np.array(X), np.array(y), seed=0)
     return model, len(y), int(np.sum(y))
 

@@ -23,7 +23,7 @@ from numpy.typing import ArrayLike
 
 from coindie.arrays import FloatArray
 from coindie.errors import ParameterError
-from coindie.params import Configurable, param
+from coindie.params import Configurable, Rule, param
 from coindie.similarity.classifier import ClassifierError, checked_rows, write_model
 from coindie.similarity.histogram import HistogramSettings
 from coindie.similarity.logistic import fit_platt_logistic, sigmoid
@@ -35,6 +35,11 @@ FORMAT_VERSION = 1
 DEFAULT_MODEL = "relief_classifier.json"
 #: Correlations are clipped to this before Fisher's z (a perfect copy would give infinity).
 _MAX_CORRELATION = 0.999
+#: The features a new model is fitted on. ``ncc_coarse`` (the 0.3-1 mm band) is measured and stored but
+#: left out: dies of one type share their design at that scale (they differ by where the engraver put
+#: each stroke, 0.1-0.2 mm), so it tells the type, not the die, and its weight made a worn or coarsely
+#: scanned pair of one die look like two dies (BENCHMARK.md, "The coarse band leaves the scorer").
+USED_FEATURES = ("ncc_fine", "local_median", "local_p90", "overlap")
 
 
 @dataclass
@@ -44,11 +49,24 @@ class ReliefClassifier(Configurable):
     NAME: ClassVar[str] = "relief"
     OWNER: ClassVar[str] = "ReliefClassifier"
     INPUT: ClassVar[str] = "features"
+    RULES: ClassVar[tuple[Rule, ...]] = (
+        Rule(
+            ("used",),
+            lambda m: (
+                len(m.used) > 0
+                and len(set(m.used)) == len(m.used)
+                and all(name in FEATURE_NAMES for name in m.used)
+            ),
+            f"distinct names among {FEATURE_NAMES}",
+        ),
+    )
 
     C: float = param(
         1.0, doc="inverse regularisation strength of the logistic regression", low=0.0, low_open=True
     )
     features: ReliefFeatureSettings = field(default_factory=ReliefFeatureSettings)
+    #: which of :data:`FEATURE_NAMES` the regression uses (a model file keeps its own)
+    used: tuple[str, ...] = USED_FEATURES
     settings: HistogramSettings = field(default_factory=HistogramSettings)  # the cache's grids
     mean: FloatArray | None = None
     scale: FloatArray | None = None
@@ -69,7 +87,7 @@ class ReliefClassifier(Configurable):
 
     def fit(self, features: ArrayLike, same_die: ArrayLike, *, seed: int = 0) -> ReliefClassifier:
         """Fit on ``features`` (n, len(FEATURE_NAMES)) and boolean labels ``same_die``; returns ``self``."""
-        X = transform_features(self._checked(features))
+        X = self._transformed(features)
         y = np.asarray(same_die).astype(bool).astype(int).ravel()
         if len(y) != len(X):
             raise ParameterError(f"{len(X)} feature rows but {len(y)} labels")
@@ -93,7 +111,7 @@ class ReliefClassifier(Configurable):
         if not self.is_fitted:
             raise ClassifierError("the relief classifier is not fitted (call fit, or load a model file)")
         assert self.mean is not None and self.scale is not None and self.coef is not None
-        X = transform_features(self._checked(features))
+        X = self._transformed(features)
         return ((X - self.mean) / self.scale) @ self.coef + self.intercept
 
     def log_odds(self, features: ArrayLike) -> FloatArray:
@@ -105,8 +123,11 @@ class ReliefClassifier(Configurable):
         """Calibrated probability (n,) that each pair was struck by the same die."""
         return sigmoid(self.log_odds(features))
 
-    def _checked(self, features: ArrayLike) -> FloatArray:
-        return checked_rows(features, len(FEATURE_NAMES), "relief features")
+    def _transformed(self, features: ArrayLike) -> FloatArray:
+        """The used columns of ``features`` (every stored feature, in :data:`FEATURE_NAMES` order),
+        correlations taken to Fisher's z."""
+        X = checked_rows(features, len(FEATURE_NAMES), "relief features")
+        return transform_features(X[:, [FEATURE_NAMES.index(name) for name in self.used]], self.used)
 
     # ---------------------------------------------------------------------------------------- files
 
@@ -120,6 +141,7 @@ class ReliefClassifier(Configurable):
             "model": "logistic regression (L2) on standardised relief features (correlations as Fisher z), "
             "Platt-calibrated",
             "feature_names": list(FEATURE_NAMES),
+            "used_features": list(self.used),
             "C": self.C,
             "features": self.features.to_dict(),
             "settings": self.settings.to_dict(),
@@ -144,6 +166,7 @@ class ReliefClassifier(Configurable):
                 )
             model = cls(
                 C=float(data["C"]),
+                used=tuple(data.get("used_features", FEATURE_NAMES)),
                 features=ReliefFeatureSettings.from_dict(data["features"]),
                 settings=HistogramSettings.from_dict(data["settings"]),
                 mean=np.asarray(data["scaler"]["mean"], dtype=np.float64),
@@ -156,10 +179,12 @@ class ReliefClassifier(Configurable):
             )
         except (KeyError, TypeError, ValueError, ParameterError) as error:
             raise ClassifierError(f"{where}: not a usable relief classifier file ({error})") from None
-        n = len(FEATURE_NAMES)
+        n = len(model.used)
         assert model.mean is not None and model.scale is not None and model.coef is not None
         if model.mean.shape != (n,) or model.scale.shape != (n,) or model.coef.shape != (n,):
-            raise ClassifierError(f"{where}: scaler and coefficients must have {n} values (the features)")
+            raise ClassifierError(
+                f"{where}: scaler and coefficients must have {n} values (the used features)"
+            )
         return model
 
     def save(self, path: str | Path) -> Path:
@@ -172,8 +197,9 @@ class ReliefClassifier(Configurable):
         return cls.from_dict(json.loads(resource.read_text()), f"coindie/data/{DEFAULT_MODEL}")
 
 
-def transform_features(X: FloatArray) -> FloatArray:
-    """Fisher's z of the correlations (every feature but the last, the overlap share)."""
+def transform_features(X: FloatArray, names: tuple[str, ...] = FEATURE_NAMES) -> FloatArray:
+    """Fisher's z of the correlations among the columns ``names`` (every feature but the overlap share)."""
     out = np.array(X, dtype=np.float64, copy=True)
-    out[:, :-1] = np.arctanh(np.clip(out[:, :-1], -_MAX_CORRELATION, _MAX_CORRELATION))
+    correlations = [k for k, name in enumerate(names) if name != "overlap"]
+    out[:, correlations] = np.arctanh(np.clip(out[:, correlations], -_MAX_CORRELATION, _MAX_CORRELATION))
     return out
