@@ -38,7 +38,7 @@ CONSISTENT = 0.9
 #: A normal within this angle of the face's axis is on the face; the others are the wall or steep relief.
 FACE_ANGLE_DEG = 60.0
 #: Points the geometry is read from (a regular subsample): enough for a quadric and a median.
-_SAMPLE = 60_000
+GEOMETRY_SAMPLE = 60_000
 #: Fewer face points than this say nothing of the face (a fragment, a test cloud): normals left alone.
 _MIN_FACE_POINTS = 100
 #: A face is flat: its spread along its axis is at most this share of its narrower spread across (a
@@ -66,7 +66,7 @@ class UpEvidence:
 
 @dataclass(frozen=True)
 class _FaceSample:
-    """A regular subsample of a scan (at most ``_SAMPLE`` points), centred, with its principal axes:
+    """A regular subsample of a scan (at most ``GEOMETRY_SAMPLE`` points), centred, with its principal axes:
     what every question of this module is asked of, computed once per scan."""
 
     centred: FloatArray
@@ -76,7 +76,7 @@ class _FaceSample:
 
     @classmethod
     def of(cls, points: FloatArray, normals: FloatArray) -> _FaceSample:
-        sample = np.arange(0, len(points), max(1, -(-len(points) // _SAMPLE)))
+        sample = np.arange(0, len(points), max(1, -(-len(points) // GEOMETRY_SAMPLE)))
         centred = points[sample] - points[sample].mean(axis=0)
         spreads, vectors = np.linalg.eigh(centred.T @ centred)
         return cls(centred, normals[sample], spreads, vectors)

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from coindie.arrays import FloatArray
-from coindie.io.orientation import face_up
+from coindie.io.orientation import GEOMETRY_SAMPLE, face_up
 from coindie.preprocess.normals import estimate_normals
 from coindie.scan import Scan
 from coindie.transforms import rigid, rotation_between
@@ -13,9 +13,6 @@ from coindie.transforms import rigid, rotation_between
 _Z = np.array([0.0, 0.0, 1.0])
 #: A mean normal shorter than this is no guide to which side is up (normals cancel out).
 _MIN_MEAN_NORMAL = 1e-3
-#: Without normals, the up side is read from the geometry of a regular subsample of this many points
-#: at most (with normals estimated on it): enough for the edge wall and the relief's skewness.
-_GEOMETRY_SAMPLE = 60_000
 #: Fewer points than this carry no geometry worth reading: the scanner's +z side is kept.
 _MIN_GEOMETRY_POINTS = 100
 
@@ -40,10 +37,11 @@ def up_axis(points: FloatArray, normals: FloatArray | None = None) -> FloatArray
 
 def _geometric_up(points: FloatArray) -> FloatArray:
     """The face's up direction from its geometry alone (normals estimated by local PCA on a regular
-    subsample, their signs unused); the scanner's +z for clouds too small to read."""
+    subsample of at most ``GEOMETRY_SAMPLE`` points, the one the reader's orientation check reads, their
+    signs unused); the scanner's +z for clouds too small to read."""
     if len(points) < _MIN_GEOMETRY_POINTS:
         return _Z
-    sample = points[:: max(1, -(-len(points) // _GEOMETRY_SAMPLE))]
+    sample = points[:: max(1, -(-len(points) // GEOMETRY_SAMPLE))]
     return face_up(sample, estimate_normals(sample))
 
 

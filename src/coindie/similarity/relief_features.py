@@ -16,7 +16,9 @@ absolute scale of one scanner:
 4. the features are normalised cross-correlations (dimensionless, in [-1, 1]): over the whole overlap per
    band, and *local* ones in Gaussian windows of ``window_mm`` whose median and 90th percentile say how much
    of the face agrees (a weak strike, a crust or a worn half lowers the global figure, not the share that
-   still matches); plus the overlap itself (a share of the smaller footprint).
+   still matches); plus the overlap itself (a share of the smaller footprint). The coarse band's
+   correlation is measured and stored, but the shipped model leaves it out
+   (:data:`coindie.similarity.relief_classifier.USED_FEATURES`): dies of one type share it.
 
 Correlations are invariant to the relief's height scale and to a height offset, and noise only lowers them
 by the ratio of noise to detail, which the per-hoard calibration (:mod:`coindie.similarity.calibration`)
