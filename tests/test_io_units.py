@@ -71,3 +71,24 @@ def test_each_unit_reads_only_its_own_sizes() -> None:
         assert file_unit(points * 1000.0) == "um"
     for across_mm in (low * 0.99, high * 1.01):
         assert file_unit(FACE.points * (across_mm / size)) == "mm"
+
+
+@pytest.mark.parametrize(("unit", "mm_per_unit"), [("cm", 10.0), ("in", 25.4), ("m", 1000.0), ("um", 0.001)])
+def test_a_declared_unit_is_read_as_declared(tmp_path: Path, unit: str, mm_per_unit: float) -> None:
+    """Centimetres and inches cannot be told from a face's size (a 20 mm face is 2 cm across: a coin in
+    millimetres too); declared, every unit reads the face back in millimetres."""
+    path = _written(tmp_path, 1.0 / mm_per_unit)
+    scan = read_scan(path, unit=unit)
+    np.testing.assert_allclose(scan.points, FACE.points, rtol=1e-12, atol=1e-9)
+    assert grid_sample(scan, 0.1).n_points == grid_sample(FACE, 0.1).n_points
+    if unit == "cm":  # undeclared, a face in centimetres is a 2 mm coin, read as written
+        np.testing.assert_allclose(read_scan(path).points, FACE.points / 10.0, rtol=1e-12, atol=1e-12)
+
+
+def test_a_declared_unit_overrides_the_size_and_an_unknown_one_is_refused(tmp_path: Path) -> None:
+    from coindie.errors import ParameterError
+
+    path = _written(tmp_path, 1e-3)  # a face in metres by its size
+    np.testing.assert_array_equal(read_scan(path, unit="mm").points, FACE.points * 1e-3)
+    with pytest.raises(ParameterError, match="unknown unit 'mile'.*cm"):
+        read_scan(path, unit="mile")

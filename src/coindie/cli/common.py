@@ -22,6 +22,16 @@ Dask = Annotated[
     typer.Option(help="Dask scheduler address (tcp://host:8786), or 'local' for a LocalCluster."),
 ]
 
+#: The unit scan files are written in (coindie.io.units); none: millimetres, or metres or micrometres where
+#: a face's size says so.
+Unit = Annotated[
+    str | None,
+    typer.Option(
+        help="Unit the scans are written in: mm, cm, m, um or in (default: mm, or m or um where a face's "
+        "size says so)."
+    ),
+]
+
 #: Library parameters set by a flag of another name: parameter -> the option's Python name in the command.
 FLAG_OF_PARAMETER = {"k": "candidates"}
 

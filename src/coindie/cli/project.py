@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from coindie.cli.common import Dask, exits_cleanly
+from coindie.cli.common import Dask, Unit, exits_cleanly
 from coindie.project.relay import DEFAULT_NEIGHBOURS, DEFAULT_ROUNDS
 
 #: The commands of this module; coindie.cli.app registers them.
@@ -24,15 +24,19 @@ def init(
     labels: Annotated[
         Path | None, typer.Option(help="Die labels (coin_id,die_id or name, die), for evaluation only.")
     ] = None,
+    unit: Unit = None,
 ) -> None:
     """Create a project from a folder of scans (files are listed now, read by `coindie run`)."""
     from coindie.project import init_project
 
-    created, report = init_project(project, scans_dir, labels)
+    created, report = init_project(project, scans_dir, labels, unit=unit)
     n = len(created.scans())
+    declared = created.unit
     typer.echo(
         f"{created.folder}: {n} faces ({len(report.added)} new, {len(report.changed)} changed, "
-        f"{report.unchanged} unchanged)" + (f", {len(created.labels())} labels" if labels else "")
+        f"{report.unchanged} unchanged)"
+        + (f", {len(created.labels())} labels" if labels else "")
+        + (f", scans in {declared}" if declared else "")
     )
     for skipped in report.skipped:
         typer.echo(f"skipped: {skipped}")

@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
-from coindie.cli.common import exits_cleanly
+from coindie.cli.common import Unit, exits_cleanly
 from coindie.errors import ParameterError
 
 if TYPE_CHECKING:
@@ -41,6 +41,7 @@ def register(
         float, typer.Option(help="Grid-sampling cell (mm) applied to both scans; 0: none.")
     ] = 0.1,
     as_json: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
+    unit: Unit = None,
 ) -> None:
     """Align SOURCE onto TARGET: print T_target_source (4x4, mm) and the figures.
 
@@ -51,7 +52,7 @@ def register(
     info = method_info(method)
     params = dict(_parsed(info, item) for item in param or [])
     registrar = info.build(params)  # parameters are checked before any file is read
-    source_scan, target_scan = _prepared(source, grid), _prepared(target, grid)
+    source_scan, target_scan = _prepared(source, grid, unit), _prepared(target, grid, unit)
     result = registrar.register(source_scan, target_scan)
     if as_json:
         typer.echo(json.dumps(_json(result, source_scan, target_scan), indent=2))
@@ -68,13 +69,13 @@ def _parsed(info: MethodInfo, item: str) -> tuple[str, Any]:
     return info.parse(key.strip(), text.strip())
 
 
-def _prepared(path: Path, grid: float) -> Scan:
+def _prepared(path: Path, grid: float, unit: str | None) -> Scan:
     from coindie.io.reader import read_scan
     from coindie.preprocess.sampling import grid_sample
 
     if grid < 0:
         raise ParameterError(f"--grid must be >= 0 mm (0: no grid sampling). Got {grid}.")
-    scan = read_scan(path)
+    scan = read_scan(path, unit=unit)
     return grid_sample(scan, grid) if grid > 0 else scan
 
 

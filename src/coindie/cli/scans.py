@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Annotated, Literal
 
 import typer
 
-from coindie.cli.common import exits_cleanly
+from coindie.cli.common import Unit, exits_cleanly
 
 if TYPE_CHECKING:
     from coindie.preprocess.summary import ScanSummary
@@ -29,13 +29,14 @@ ScanArgument = Annotated[
 def info(
     scan: ScanArgument,
     json: Annotated[bool, typer.Option("--json", help="Print the facts as one JSON object.")] = False,
+    unit: Unit = None,
 ) -> None:
     """Points, extent, diameter, spacing, normals and colours of a scan (lengths in mm)."""
     from coindie.io import read_scan
     from coindie.preprocess.summary import summarize_scan
 
     with _one_blas_thread():
-        summary = summarize_scan(read_scan(scan))
+        summary = summarize_scan(read_scan(scan, unit=unit))
     if json:
         import json as json_module
 
@@ -60,6 +61,7 @@ def render(
         float, typer.Option("--altitude", min=1.0, max=90.0, help="Light height above the face (degrees).")
     ] = 45.0,
     tone: Annotated[Literal["bronze", "grey"], typer.Option("--tone", help="Colour ramp.")] = "bronze",
+    unit: Unit = None,
 ) -> None:
     """A shaded relief image of the face, lit from the upper left like a coin photograph."""
     from coindie.io import read_scan
@@ -68,7 +70,7 @@ def render(
     path = output if output is not None else Path(f"{scan.stem}.png")
     options = {"width_px": width, "light_azimuth_deg": azimuth, "light_altitude_deg": altitude, "tone": tone}
     with _one_blas_thread():
-        typer.echo(save_render(read_scan(scan), path, **options))
+        typer.echo(save_render(read_scan(scan, unit=unit), path, **options))
 
 
 def _one_blas_thread() -> AbstractContextManager[object]:

@@ -9,7 +9,7 @@ from pathlib import Path
 from coindie.errors import ParameterError, ScanReadError
 from coindie.ids import face_id_of
 from coindie.io.orientation import outward_normals
-from coindie.io.units import in_millimetres
+from coindie.io.units import checked_unit, in_millimetres
 from coindie.scan import Scan
 
 #: Largest scan file read by default (2 GiB); checked on the file size before any byte is read.
@@ -19,11 +19,13 @@ MAX_SCAN_BYTES = 2 * 2**30
 SCAN_SUFFIXES = (".ply", ".stl", ".obj")
 
 
-def read_scan(path: str | Path, *, max_bytes: int = MAX_SCAN_BYTES) -> Scan:
+def read_scan(path: str | Path, *, max_bytes: int = MAX_SCAN_BYTES, unit: str | None = None) -> Scan:
     """Read a scan (PLY point cloud or mesh, STL, OBJ); its id is parsed from the file name.
 
-    Coordinates written in metres or micrometres (a face 0.02 or 20,000 units across) are read in
-    millimetres (:mod:`coindie.io.units`), with a warning naming the file.
+    Coordinates are read in millimetres (:mod:`coindie.io.units`). With ``unit`` (``mm``, ``cm``, ``m``,
+    ``um``, ``in``) they are scaled from it as declared. Without, coordinates written in metres or
+    micrometres (a face 0.02 or 20,000 units across) are found by the face's size and rescaled, with a
+    warning naming the file.
 
     Normals whose signs disagree (never oriented, or a mesh wound either way) are turned to point out of
     the coin (:func:`~coindie.io.orientation.outward_normals`); normals that agree are kept as written.
@@ -33,6 +35,7 @@ def read_scan(path: str | Path, *, max_bytes: int = MAX_SCAN_BYTES) -> Scan:
         InvalidScanError: the file was read but its content is unusable (no points, NaN coordinates, ...).
     """
     path = Path(path)
+    checked_unit(unit)
     suffix = checked_scan_file(path, max_bytes=max_bytes)
     face_id = face_id_of(path)
     if suffix == ".ply":
@@ -43,7 +46,7 @@ def read_scan(path: str | Path, *, max_bytes: int = MAX_SCAN_BYTES) -> Scan:
         from coindie.io.mesh import read_mesh  # imports trimesh (~0.5 s): only when a mesh is read
 
         scan = read_mesh(path, face_id)
-    points, unit = in_millimetres(scan.points, path)
+    points, unit = in_millimetres(scan.points, path, unit)
     if unit != "mm":
         scan = replace(scan, points=points)
     if scan.normals is None:

@@ -9,7 +9,9 @@ pipeline fails far from the cause (a cloud of one point after grid sampling).
 A coin's size tells these units apart without doubt: a coin face is 2-200 mm across (the smallest Greek
 fractions are about 5 mm, the largest medallions about 70 mm), so of millimetres, metres and micrometres,
 which are 1,000 times apart, at most one unit puts a face within those bounds. That unit is the file's.
-Centimetres and inches are not guessed: a face 0.8 units wide may be 8 mm or 20 mm across.
+Centimetres and inches are not guessed: a face 0.8 units wide may be 8 mm or 20 mm across. They, and any
+of the others, can be declared instead (``coindie init --unit cm``: the project's ``unit``): a declared
+unit is used as given, with no guess.
 """
 
 from __future__ import annotations
@@ -19,9 +21,12 @@ import logging
 import numpy as np
 
 from coindie.arrays import FloatArray
+from coindie.errors import ParameterError
 
-#: Millimetres per unit of each unit a scan can be written in.
+#: Millimetres per unit of the units told apart by a face's size (1,000 apart).
 MM_PER_UNIT = {"mm": 1.0, "m": 1000.0, "um": 0.001}
+#: Millimetres per unit of every unit a scan can be declared in (``unit=`` of :func:`in_millimetres`).
+DECLARED_UNITS = {**MM_PER_UNIT, "cm": 10.0, "in": 25.4}
 #: Sizes of a coin face in millimetres (across, the largest extent of the scan): the bounds of the units'
 #: test. Wide enough for any coin; a factor of 1,000 narrower than the units' spacing.
 COIN_SIZE_MM = (2.0, 200.0)
@@ -57,9 +62,22 @@ def _unit_of(size: float) -> str:
     return "mm"
 
 
-def in_millimetres(points: FloatArray, source: object = None) -> tuple[FloatArray, str]:
-    """``points`` in millimetres, and the unit they were found in (:func:`file_unit`). ``source`` (a
-    path) names the scan in the warning logged when the points are rescaled."""
+def checked_unit(unit: str | None) -> str | None:
+    """``unit`` when it is one of ``DECLARED_UNITS`` or None (guess); ``ParameterError`` otherwise."""
+    if unit is not None and unit not in DECLARED_UNITS:
+        known = ", ".join(DECLARED_UNITS)
+        raise ParameterError(f"unknown unit {unit!r} (known: {known}; or none, to tell it from the size)")
+    return unit
+
+
+def in_millimetres(
+    points: FloatArray, source: object = None, unit: str | None = None
+) -> tuple[FloatArray, str]:
+    """``points`` in millimetres, and their unit: ``unit`` when declared (one of ``DECLARED_UNITS``, used
+    as given), else the unit they were found in (:func:`file_unit`). ``source`` (a path) names the scan in
+    the warning logged when undeclared points are rescaled."""
+    if checked_unit(unit) is not None:
+        return (points if unit == "mm" else points * DECLARED_UNITS[unit]), unit
     size = face_size(points)
     unit = _unit_of(size)
     if unit == "mm":

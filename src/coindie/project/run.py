@@ -293,6 +293,7 @@ def _prepare_faces(
     classifier = _classifier(config)
     grid = _cache_grid(classifier)
     params = face_params_hash(grid, config.registration_grid_mm)
+    unit = project.unit
     tasks = []
     for scan in project.scans():
         if scan.status == "error":
@@ -301,7 +302,13 @@ def _prepare_faces(
             continue
         tasks.append(
             FaceTask(
-                scan.face_id, scan.path, str(project.cache_dir), params, grid, config.registration_grid_mm
+                scan.face_id,
+                scan.path,
+                str(project.cache_dir),
+                params,
+                grid,
+                config.registration_grid_mm,
+                unit,
             )
         )
     if not tasks:

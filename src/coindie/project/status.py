@@ -20,6 +20,7 @@ class ProjectStatus:
     pair_errors: list[str] = field(default_factory=list)
     separation: list[str] = field(default_factory=list)  # per side: do the scores separate (words, numbers)
     relays: tuple[int, int] = (0, 0)  # relays tried, and kept (coindie.project.relay)
+    unit: str | None = None  # the scans' declared unit (coindie init --unit); None: told from each size
 
     def to_dict(self) -> dict[str, Any]:
         return asdict(self)
@@ -27,6 +28,11 @@ class ProjectStatus:
     def text(self) -> str:
         lines = [f"project {self.folder}"]
         lines.append("faces: " + ", ".join(f"{n} {status}" for status, n in sorted(self.faces.items())))
+        lines.append(
+            f"scans read in {self.unit} (declared)"
+            if self.unit
+            else "scans read in mm (m or um where a face's size says so)"
+        )
         for side, counts in sorted(self.pairs.items()):
             total = sum(counts.values())
             done = counts.get("done", 0)
@@ -72,7 +78,7 @@ def project_status(project: Project, max_errors: int = 50) -> ProjectStatus:
     pair_errors = project.failed_pairs(params, max_errors)
     return ProjectStatus(
         str(project.folder), faces, pairs, last_run, rate, eta, face_errors[:max_errors], pair_errors,
-        separation_lines(project), project.relay_counts(params),
+        separation_lines(project), project.relay_counts(params), project.unit,
     )  # fmt: skip
 
 

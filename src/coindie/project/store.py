@@ -81,19 +81,24 @@ def side_of(face_id: FaceId) -> str:
 
 
 def init_project(
-    folder: str | Path, scans_dir: str | Path, labels: str | Path | None = None
+    folder: str | Path, scans_dir: str | Path, labels: str | Path | None = None, unit: str | None = None
 ) -> tuple[Project, AddReport]:
     """Create the project (or open it again) and add the scans of ``scans_dir``; ``labels`` (a CSV
-    ``coin_id,die_id`` or ``name, die``) are stored for evaluation only."""
+    ``coin_id,die_id`` or ``name, die``) are stored for evaluation only. ``unit`` declares the scans' unit
+    (:data:`coindie.io.units.DECLARED_UNITS`; None: each face's unit is told from its size)."""
     from coindie.io.labels import read_labels
+    from coindie.io.units import checked_unit
 
     folder = Path(folder)
     if folder.exists() and not folder.is_dir():
         raise ProjectError(f"{folder}: exists and is not a folder")
     checked_labels = read_labels(labels) if labels is not None else None
+    checked_unit(unit)
     folder.mkdir(parents=True, exist_ok=True)
     project = Project(folder)
     project.create()
+    if unit is not None:
+        project.declare_unit(unit)
     report = project.add_scans(scans_dir)
     if checked_labels is not None:
         project.set_labels({str(k): v for k, v in checked_labels.items()}, str(Path(labels).resolve()))
@@ -184,6 +189,27 @@ class Project:
     def set_meta(self, key: str, value: str) -> None:
         with self.transaction() as db:
             db.execute("INSERT OR REPLACE INTO meta VALUES (?, ?)", (key, value))
+
+    @property
+    def unit(self) -> str | None:
+        """The unit the project's scans were declared in (``coindie init --unit``); None when each face's
+        unit is told from its size (:mod:`coindie.io.units`)."""
+        return self.meta("unit")
+
+    def declare_unit(self, unit: str) -> None:
+        """Record the scans' unit. Every face of a project is read in one unit: once a face has been
+        read, another unit is refused (``ProjectError``: make a new project)."""
+        current = self.unit
+        if unit == current:
+            return
+        read = self.db.execute("SELECT COUNT(*) FROM scans WHERE status != 'new'").fetchone()[0]
+        if read:
+            was = current if current is not None else "told from each face's size"
+            raise ProjectError(
+                f"{self.folder}: {read} faces were read with unit {was}; to read the scans in {unit}, "
+                "make a new project"
+            )
+        self.set_meta("unit", unit)
 
     # ------------------------------------------------------------------------------------------- scans
 

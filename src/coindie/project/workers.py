@@ -53,6 +53,9 @@ class FaceTask:
     params_hash: str
     grid_mm: float
     registration_grid_mm: float
+    #: The project's declared scan unit (None: told from the face's size). Not part of ``params_hash``:
+    #: a project's unit cannot change once a face is read (``Project.declare_unit``).
+    unit: str | None = None
 
 
 @dataclass(frozen=True)
@@ -109,7 +112,7 @@ def _prepare(task: FaceTask, start: float) -> dict[str, Any]:
     from coindie.registration.clouds import MIN_POINTS, with_normals
 
     content_hash = file_hash(task.path)
-    scan = read_scan(task.path)
+    scan = read_scan(task.path, unit=task.unit)
     fine = grid_sample(with_normals(scan), task.grid_mm)
     if fine.n_points < MIN_POINTS:
         raise CoinDieError(f"{task.path}: {fine.n_points} points after grid sampling, too few to register")

@@ -132,9 +132,11 @@ def export_aligned_dies(
     ``_unaligned``. A face whose scan cannot be read is skipped and the others go on."""
     from coindie.errors import CoinDieError
     from coindie.io import read_scan, write_ply
+    from coindie.project import open_project
 
     alignments = project_alignments(project_folder, threshold=threshold, method=method, auto=auto)
     paths = scan_paths(project_folder)
+    unit = open_project(project_folder).unit
     out = Path(out_dir)
     total = sum(len(a.faces) for dies in alignments.values() for a in dies)
     if progress:
@@ -147,7 +149,7 @@ def export_aligned_dies(
             files = written.setdefault(folder.name, [])
             for face in alignment.faces:
                 try:
-                    scan = read_scan(paths[face])
+                    scan = read_scan(paths[face], unit=unit)
                     T = alignment.T_reference_face.get(face)
                     name = f"{face}.ply" if T is not None else f"{face}_unaligned.ply"
                     files.append(write_ply(folder / name, scan if T is None else scan.transformed(T)))

@@ -76,7 +76,11 @@ def verified_faces(edits: list[dict]) -> set[str]:
 
 
 def _render_plate_images(
-    alignment: DieAlignment, paths: dict[str, Path], width_px: int, progress: Progress | None
+    alignment: DieAlignment,
+    paths: dict[str, Path],
+    width_px: int,
+    progress: Progress | None,
+    unit: str | None = None,
 ) -> dict[str, str]:
     """Face -> PNG data URI of its relief in the reference's canonical frame; a face that cannot be read or
     rendered is left out (the plate says so)."""
@@ -87,13 +91,13 @@ def _render_plate_images(
 
     images: dict[str, str] = {}
     try:
-        reference = read_scan(paths[alignment.reference])
+        reference = read_scan(paths[alignment.reference], unit=unit)
         frame = canonical_frame(reference)
     except (CoinDieError, KeyError, OSError):
         frame = None
     for face in alignment.faces:
         try:
-            scan = read_scan(paths[face])
+            scan = read_scan(paths[face], unit=unit)
             T = alignment.T_reference_face.get(face)
             if T is not None and frame is not None:
                 image = render_relief(
@@ -274,7 +278,9 @@ def build_report(
         figures = {key: file_uri(path) for key, path in analysis.files.items() if path.suffix == ".svg"}
     alignments = project_alignments(project_folder, sides)
     paths = scan_paths(project_folder)
-    verified = verified_faces(open_project(project_folder).edits())
+    project = open_project(project_folder)
+    verified, unit = verified_faces(project.edits()), project.unit
+    project.close()
     if progress:
         progress(0, sum(len(a.faces) for dies in alignments.values() for a in dies))
     body = [
@@ -300,7 +306,7 @@ def build_report(
         plates, singles = [], []
         for alignment in dies:
             images = _render_plate_images(
-                alignment, paths, width_px if len(alignment.faces) > 1 else 160, progress
+                alignment, paths, width_px if len(alignment.faces) > 1 else 160, progress, unit
             )
             is_verified = any(f in verified for f in alignment.faces)
             if len(alignment.faces) > 1:

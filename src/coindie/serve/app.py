@@ -262,15 +262,15 @@ def create_app(source: ReviewSource, token: str, hosts: set[str] | None = None) 
 
     @app.get("/api/faces/{face}/thumbnail.png")
     def thumbnail(face: str) -> Response:
-        return Response(images.thumbnail(scan_path(face)), media_type="image/png")
+        return Response(images.thumbnail(scan_path(face), unit=source.unit), media_type="image/png")
 
     @app.get("/api/faces/{face}/relief.png")
     def relief(face: str) -> Response:
-        return Response(images.own_image(scan_path(face)), media_type="image/png")
+        return Response(images.own_image(scan_path(face), unit=source.unit), media_type="image/png")
 
     @app.get("/api/faces/{face}/relief.json")
     def relief_grid(face: str) -> dict[str, Any]:
-        grid, _, _ = images.own_frame(scan_path(face))
+        grid, _, _ = images.own_frame(scan_path(face), unit=source.unit)
         return grid.to_dict()
 
     @app.get("/api/pairs/{a}/{b}")
@@ -297,7 +297,7 @@ def create_app(source: ReviewSource, token: str, hosts: set[str] | None = None) 
         if record.T_target_source is None:
             raise KeyError(f"the pair {record.target}-{record.source} has no transform")
         key = tuple(float(v) for v in np.asarray(record.T_target_source).ravel())
-        return images.aligned_pair(target, moved, key, 420)
+        return images.aligned_pair(target, moved, key, 420, source.unit)
 
     @app.get("/api/pairs/{a}/{b}/{kind}.png")
     def pair_image(a: str, b: str, kind: str) -> Response:
@@ -310,16 +310,20 @@ def create_app(source: ReviewSource, token: str, hosts: set[str] | None = None) 
         record = source.pair_record(a, b)
         if record.T_target_source is None:
             raise KeyError(f"the pair {record.target}-{record.source} has no transform")
-        return images.clouds(scan_path(record.target), scan_path(record.source), record.T_target_source)
+        return images.clouds(
+            scan_path(record.target), scan_path(record.source), record.T_target_source, source.unit
+        )
 
     @app.post("/api/pairs/{a}/{b}/register")
     def register(a: str, b: str, request: RegisterRequest) -> dict[str, Any]:
         target, moved = source.face(a), source.face(b)
         if len(request.target_pixels) != len(request.source_pixels) or len(request.target_pixels) < 3:
             raise ParameterError("pick the same number (>= 3) of corresponding points on both faces")
-        target_points = images.picked_points(scan_path(target), request.target_pixels)
-        source_points = images.picked_points(scan_path(moved), request.source_pixels)
-        result = register_by_points(scan_path(target), scan_path(moved), target_points, source_points)
+        target_points = images.picked_points(scan_path(target), request.target_pixels, unit=source.unit)
+        source_points = images.picked_points(scan_path(moved), request.source_pixels, unit=source.unit)
+        result = register_by_points(
+            scan_path(target), scan_path(moved), target_points, source_points, source.unit
+        )
         reason = request.reason.strip() or "expert re-registration"
         payload = {
             "source": moved,

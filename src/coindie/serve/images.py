@@ -34,8 +34,9 @@ CLOUD_POINTS = 30000
 
 
 @lru_cache(maxsize=64)
-def face_scan(path: Path) -> tuple[Scan, CanonicalFrame]:
-    scan = read_scan(path)
+def face_scan(path: Path, unit: str | None = None) -> tuple[Scan, CanonicalFrame]:
+    """A face read in millimetres (``unit``: the project's declared scan unit) and its canonical frame."""
+    scan = read_scan(path, unit=unit)
     return scan, canonical_frame(scan)
 
 
@@ -46,8 +47,8 @@ def png(image: Image.Image) -> bytes:
 
 
 @lru_cache(maxsize=4096)
-def thumbnail(path: Path, width_px: int = 160) -> bytes:
-    scan, frame = face_scan(path)
+def thumbnail(path: Path, width_px: int = 160, unit: str | None = None) -> bytes:
+    scan, frame = face_scan(path, unit)
     return png(render_relief(scan, width_px=width_px, frame=frame))
 
 
@@ -135,11 +136,11 @@ class AlignedPair:
 
 @lru_cache(maxsize=16)
 def aligned_pair(
-    target_path: Path, source_path: Path, T_key: tuple[float, ...], width_px: int
+    target_path: Path, source_path: Path, T_key: tuple[float, ...], width_px: int, unit: str | None = None
 ) -> AlignedPair:
     T_target_source = np.asarray(T_key, dtype=np.float64).reshape(4, 4)
-    target, frame = face_scan(target_path)
-    source, _ = face_scan(source_path)
+    target, frame = face_scan(target_path, unit)
+    source, _ = face_scan(source_path, unit)
     moved = source.transformed(T_target_source)
     resolution = _resolution(frame, target, width_px)
     reliefs = [
@@ -187,22 +188,26 @@ def pair_image(aligned: AlignedPair, kind: str) -> bytes:
     raise KeyError(f"no pair image {kind!r}: one of target, source, difference, heat")
 
 
-def own_frame(path: Path, width_px: int = 480) -> tuple[Grid, NDArray[np.float64], CanonicalFrame]:
+def own_frame(
+    path: Path, width_px: int = 480, unit: str | None = None
+) -> tuple[Grid, NDArray[np.float64], CanonicalFrame]:
     """A face in its canonical frame: grid, heights on it, frame (for picking points)."""
-    scan, frame = face_scan(path)
+    scan, frame = face_scan(path, unit)
     resolution = _resolution(frame, scan, width_px)
     relief = height_map(scan, frame=frame, resolution=resolution, fill_max_distance=3 * resolution)
     grid = Grid(relief.origin[0], relief.origin[1], resolution, relief.shape)
     return grid, relief.values.astype(np.float64), frame
 
 
-def picked_points(path: Path, pixels: list[tuple[float, float]], width_px: int = 480) -> NDArray[np.float64]:
+def picked_points(
+    path: Path, pixels: list[tuple[float, float]], width_px: int = 480, unit: str | None = None
+) -> NDArray[np.float64]:
     """Scan-frame 3D points (mm) under picked pixels (col, row) of :func:`own_frame`'s image.
 
     The height is the median of the relief within 2 pixels (a click lands between points); the quadric
     the heights were measured from is added back.
     """
-    grid, values, frame = own_frame(path, width_px)
+    grid, values, frame = own_frame(path, width_px, unit)
     out = []
     for col, row in pixels:
         r, c = int(round(row)), int(round(col))
@@ -216,15 +221,17 @@ def picked_points(path: Path, pixels: list[tuple[float, float]], width_px: int =
     return apply(np.linalg.inv(frame.T_canonical_scan), canonical)
 
 
-def own_image(path: Path, width_px: int = 480) -> bytes:
-    grid, values, _ = own_frame(path, width_px)
+def own_image(path: Path, width_px: int = 480, unit: str | None = None) -> bytes:
+    grid, values, _ = own_frame(path, width_px, unit)
     return png(_shade_rgba(values, grid.resolution))
 
 
-def clouds(target_path: Path, source_path: Path, T_target_source: NDArray[np.float64]) -> dict[str, list]:
+def clouds(
+    target_path: Path, source_path: Path, T_target_source: NDArray[np.float64], unit: str | None = None
+) -> dict[str, list]:
     """Both clouds in the target's canonical frame (subsampled, centred), for the 3D view."""
-    target, frame = face_scan(target_path)
-    source, _ = face_scan(source_path)
+    target, frame = face_scan(target_path, unit)
+    source, _ = face_scan(source_path, unit)
     rng = np.random.default_rng(0)
 
     def pick(points: NDArray[np.float64]) -> NDArray[np.float64]:

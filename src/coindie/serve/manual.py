@@ -44,7 +44,11 @@ class ManualRegistration:
 
 
 def register_by_points(
-    target_path: Path, source_path: Path, target_points: NDArray, source_points: NDArray
+    target_path: Path,
+    source_path: Path,
+    target_points: NDArray,
+    source_points: NDArray,
+    unit: str | None = None,
 ) -> ManualRegistration:
     """``T_target_source`` from >= 3 corresponding points (scan frames, mm), refined and scored.
 
@@ -63,8 +67,8 @@ def register_by_points(
         )
     T_start = fit_rigid(src, dst)
     rms = float(np.sqrt(np.mean(np.sum((transform_points(T_start, src) - dst) ** 2, axis=1))))
-    target, _ = face_scan(target_path)
-    source, _ = face_scan(source_path)
+    target, _ = face_scan(target_path, unit)
+    source, _ = face_scan(source_path, unit)
     target_cloud = Cloud.of(grid_sample(target, GRID_MM))
     source_cloud = Cloud.of(grid_sample(source, GRID_MM))
     outcome = point_to_plane_icp(

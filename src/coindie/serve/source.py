@@ -66,6 +66,7 @@ class ReviewSource:
     sides: dict[str, str] = field(default_factory=dict)
     labels: dict[str, str] = field(default_factory=dict)  # given at init; for evaluation, never shown
     cuts: list[SideCut] = field(default_factory=list)
+    unit: str | None = None  # the scans' declared unit (a project's coindie init --unit); None: by size
     _links: tuple[int, ReviewLinks] | None = field(default=None, repr=False)
 
     @property
@@ -251,10 +252,11 @@ def _from_project(folder: Path, threshold: float | None) -> ReviewSource:
     paths = {face: Path(s.path) for face, s in scans.items()}
     sides = {face: s.side for face, s in scans.items()}
     labels = project.labels()
+    unit = project.unit
     project.close()
     return ReviewSource(
         folder.name, folder.resolve(), graph, EditLog.of_project(folder), tau, paths, pairs, sides, labels,
-        cuts,
+        cuts, unit,
     )  # fmt: skip
 
 
