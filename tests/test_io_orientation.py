@@ -122,3 +122,23 @@ def test_a_mesh_wound_either_way_is_read_with_outward_normals(tmp_path: Path) ->
     assert read.normals is not None
     truth = relief.normals((read.points @ R)[:, :2]) @ R.T  # the points back in the face's frame
     assert _agreement(read.normals, truth) > 0.99
+
+
+def test_normals_all_into_a_worn_coin_are_turned_out_by_its_wall_alone(tmp_path: Path) -> None:
+    """A face whose relief leans downwards (worn high points, pits and crusts: the relief's lean then
+    points the wrong way) is still told up by its wall: its normals, all written into the coin, are read
+    out of it; written out of it, they are read as written."""
+    from test_preprocess_synthetic import BUMPS, SyntheticCoin, make_scan
+
+    pitted = tuple((x, y, -height, sigma) for x, y, height, sigma in BUMPS)
+    scan = _turned_over(make_scan(SyntheticCoin(spacing=0.1, bumps=pitted)), 5)
+    assert scan.normals is not None
+    true_up = scan.normals.mean(axis=0)
+    evidence = up_evidence(scan.points, scan.normals)
+    assert evidence.cue == "wall" and evidence.sign * evidence.axis @ true_up > 0
+    assert evidence.relief_skewness * evidence.axis @ true_up < 0  # the relief's lean says down
+    for sign in (1.0, -1.0):
+        written = Scan(points=scan.points, normals=sign * scan.normals, id=scan.id)
+        read = read_scan(write_ply(tmp_path / "L0001D.ply", written, dtype=np.float64))
+        assert read.normals is not None
+        np.testing.assert_allclose(read.normals, read_ply(tmp_path / "L0001D.ply").normals * sign, atol=1e-12)

@@ -41,8 +41,8 @@ if TYPE_CHECKING:
 PAIR_FUNCTION_VERSION = 2
 #: Version of the per-face work (bump when a change alters the cache: faces are prepared again).
 #: 2: normals whose signs disagree are turned out of the coin on reading; 3: scans in metres or micrometres
-#: are read in millimetres.
-FACE_WORK_VERSION = 3
+#: are read in millimetres; 4: agreeing normals that the wall alone says point into the coin are turned.
+FACE_WORK_VERSION = 4
 
 
 @dataclass(frozen=True)
