@@ -49,8 +49,8 @@ demo: $(STAMP)
 # The numerically sensitive tests (marked numeric) again under two other OpenBLAS kernels, so that the suite
 # does not hold only for this CPU's (numpy's and scipy's OpenBLAS are DYNAMIC_ARCH builds: OPENBLAS_CORETYPE
 # picks the kernel; threadpoolctl.threadpool_info() reports it; Zen runs the Haswell kernels). A kernel the
-# CPU cannot run (Sandybridge needs AVX, Zen AVX2, SkylakeX AVX-512) is skipped. About 20 s a kernel.
-NUMERIC_KERNELS ?= Sandybridge:avx Zen:avx2
+# CPU cannot run (Sandybridge needs AVX, Zen AVX2, SkylakeX AVX-512) is skipped. About 10-20 s a kernel.
+NUMERIC_KERNELS ?= Sandybridge:avx Zen:avx2 SkylakeX:avx512f
 NUMERIC_TESTS = $(shell grep -l "pytest.mark.numeric" tests/test_*.py)
 
 test: $(STAMP) chromium
