@@ -24,7 +24,10 @@ table: ``ordinary``, ``hard`` (worn, bent, broken, crusted; one type a side, die
 uniform, centred flans). Beside the PLYs and ``labels.csv``: ``poses.json`` (each face's T_scan_die: for two
 faces of one die, T_b_a = T_scan_die[b] @ inv(T_scan_die[a])) and ``faces.json`` (what each face was
 drawn with: flan, share of the die on it, off-centre share, double strike, weak zone, wear, corrosion,
-cupping, bend, scanner). ``--evaluate`` runs the shipped defaults on each hoard as a user would and prints
+cupping, bend, scanner). ``truth.json`` and ``splits.csv`` hold the same poses in the form
+``coindie bench registration`` reads (every face in the ``registration_test`` split), so that its
+registration benchmark runs on these hoards as it is: ``coindie bench registration OUT/hard-1 --out R
+--methods relief,fcgf+icp``. ``--evaluate`` runs the shipped defaults on each hoard as a user would and prints
 its evaluation (FMI, ARI, clusters against dies). No pass/fail: a measurement (BENCHMARK.md, "An independent
 generator").
 """
@@ -450,6 +453,19 @@ def make_hoard(folder: Path, name: str, seed: int, coins: int = 40, dies: int = 
     (folder / "poses.json").write_text(json.dumps(poses, indent=1, sort_keys=True))
     # what each face was drawn with (flan, strike, wear, scanner), to tell which coins a method fails on
     (folder / "faces.json").write_text(json.dumps(faces, indent=1, sort_keys=True))
+    write_truth(folder)
+
+
+def write_truth(folder: Path) -> None:
+    """``truth.json`` and ``splits.csv`` of a hoard, from its ``poses.json``, in the form of coindie's
+    registration benchmark (written here as plain JSON and CSV, with nothing of coindie)."""
+    poses = json.loads((folder / "poses.json").read_text())
+    truth = {"faces": {face: {"T_scan_die": T} for face, T in sorted(poses.items())}}
+    (folder / "truth.json").write_text(json.dumps(truth, indent=1))
+    with (folder / "splits.csv").open("w", newline="") as out:
+        writer = csv.writer(out)
+        writer.writerow(["face_id", "split"])
+        writer.writerows((face, "registration_test") for face in sorted(poses))
 
 
 def evaluate(folder: Path, coindie: str) -> dict[str, object]:
@@ -490,6 +506,8 @@ def main() -> None:
         folder = args.out / f"{name}-{args.seed}"
         if not (folder / "labels.csv").exists():
             make_hoard(folder, name, args.seed * 100 + list(KINDS).index(name), coins=args.coins)
+        elif not (folder / "truth.json").exists():  # a hoard made before the script wrote it
+            write_truth(folder)
         if args.evaluate:
             try:
                 result = evaluate(folder, args.coindie)
