@@ -453,13 +453,12 @@ def make_hoard(folder: Path, name: str, seed: int, coins: int = 40, dies: int = 
     (folder / "poses.json").write_text(json.dumps(poses, indent=1, sort_keys=True))
     # what each face was drawn with (flan, strike, wear, scanner), to tell which coins a method fails on
     (folder / "faces.json").write_text(json.dumps(faces, indent=1, sort_keys=True))
-    write_truth(folder)
+    write_truth(folder, poses)
 
 
-def write_truth(folder: Path) -> None:
-    """``truth.json`` and ``splits.csv`` of a hoard, from its ``poses.json``, in the form of coindie's
-    registration benchmark (written here as plain JSON and CSV, with nothing of coindie)."""
-    poses = json.loads((folder / "poses.json").read_text())
+def write_truth(folder: Path, poses: dict[str, list[list[float]]]) -> None:
+    """``truth.json`` and ``splits.csv`` of a hoard from its faces' poses (``poses.json``), in the form of
+    coindie's registration benchmark (written here as plain JSON and CSV, with nothing of coindie)."""
     truth = {"faces": {face: {"T_scan_die": T} for face, T in sorted(poses.items())}}
     (folder / "truth.json").write_text(json.dumps(truth, indent=1))
     with (folder / "splits.csv").open("w", newline="") as out:
@@ -507,7 +506,7 @@ def main() -> None:
         if not (folder / "labels.csv").exists():
             make_hoard(folder, name, args.seed * 100 + list(KINDS).index(name), coins=args.coins)
         elif not (folder / "truth.json").exists():  # a hoard made before the script wrote it
-            write_truth(folder)
+            write_truth(folder, json.loads((folder / "poses.json").read_text()))
         if args.evaluate:
             try:
                 result = evaluate(folder, args.coindie)
