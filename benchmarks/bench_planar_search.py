@@ -1,12 +1,14 @@
 """How often `relief`'s planar search puts same-die pairs in the ICP's reach, per variant, and its cost.
 
     .venv/bin/python benchmarks/bench_planar_search.py HOARD [HOARD ...] \
-        --variants "relief,relief[relief.coarse_step=3],relief[relief.angle_step=10]" [--pairs 50]
+        --variants "relief,relief[relief.coarse_step=3],relief[relief.angle_step=10]" [--pairs 50] \
+        [--split registration_test]
 
 The planar search (the turn sweep and the masked correlations of
 :mod:`coindie.registration.relief_search`) is most of a pair's time and what the hard rows' FMI rests on:
 a pair whose planar pose is wrong is lost to the ICP. For the same-die pairs of each hoard's
-``cluster_test`` split (every face; dies take turns, ``--pairs`` per hoard; the source turned as in
+``cluster_test`` split (``--split``: the hoards of ``benchmarks/outsider_hoards.py`` have
+``registration_test`` alone; every face; dies take turns, ``--pairs`` per hoard; the source turned as in
 ``coindie bench registration``), each variant's planar pose, lifted to 3-D through both canonical frames,
 is compared with the truth: *right* is within 5° and 1 mm (the ICP's basin, which the translation of a
 wrong turn leaves by millimetres). The table gives the share right, the pairs a variant gets right that
@@ -53,6 +55,11 @@ def main() -> None:
     parser.add_argument("hoards", type=Path, nargs="+")
     parser.add_argument("--variants", default="relief", help="comma-separated relief labels")
     parser.add_argument("--pairs", type=int, default=50, help="same-die pairs per hoard")
+    parser.add_argument(
+        "--split",
+        default="cluster_test",
+        help="the split whose same-die pairs are drawn",
+    )
     args = parser.parse_args()
     labels = [label.strip() for label in args.variants.split(",") if label.strip()]
     if not labels:
@@ -66,7 +73,7 @@ def main() -> None:
     pairs = []
     for hoard in args.hoards:
         truth = load_truth(hoard)
-        for _, a, b, T_turn in plan_pairs(truth, "cluster_test", args.pairs):
+        for _, a, b, T_turn in plan_pairs(truth, args.split, args.pairs):
             pairs.append((truth, a, b, T_turn))
     right = {label: [] for label in labels}
     seconds = {label: [] for label in labels}
