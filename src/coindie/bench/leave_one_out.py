@@ -7,6 +7,12 @@ over its whole range), and applied to the matrix's rows with that axis at its ex
 the shipped model (trained on the whole wide world) on the same rows: where the held-out model does as
 well, the scorer did not need to see the extreme to handle it.
 
+Each held-out model is also judged on the all-hard mix (the ``hard`` row, extreme ``hard`` in the
+table), when ``OUT/projects`` holds its project: there every axis is at its hard extreme at once, the
+held-out one among them. The single-axis rows separate their dies so well that every model clusters them
+without a mistake (FMI 1.000 on every extreme of the fourteen axes, BENCHMARK.md); the all-hard mix is
+where leaving an axis out of training could still show.
+
 Each training hoard is a ``study`` hoard scaled by ``scale`` (default 0.5: 40 faces), registered and
 measured like any row (a project under ``OUT/leave-one-out/projects``); the model is fitted on every
 valid pair it holds (hidden labels), with the shipped model's settings. Judged like the matrix: per-hoard
@@ -25,6 +31,8 @@ import numpy as np
 from coindie.errors import ParameterError
 
 HELD_OUT, SHIPPED = "held out", "shipped"
+#: The matrix's all-hard row (every axis at its hard extreme), on which each held-out model is judged too.
+ALL_HARD = "hard"
 
 
 @dataclass(frozen=True)
@@ -49,7 +57,8 @@ def run_leave_one_out(
     echo: Callable[[str], None] = print,
 ) -> list[LeaveOneOutResult]:
     """Train per axis on ``wide,AXIS:middle``, test on the matrix's ``AXIS:low`` / ``AXIS:high`` rows
-    that have a project in ``out/projects`` (run them with ``coindie bench generalization --rows``).
+    that have a project in ``out/projects`` (run them with ``coindie bench generalization --rows``), and
+    on its all-hard row (``hard``) when it has one.
     Writes ``leave-one-out.{csv,json,md,png}`` in ``out``."""
     from coindie.bench.generalization import row_project
     from coindie.similarity.scorers import default_scorer
@@ -69,6 +78,8 @@ def run_leave_one_out(
         if not rows:
             echo(f"{axis:>12}: no project of {axis}:low or {axis}:high in {out / 'projects'}, left out")
             continue
+        if (out / "projects" / ALL_HARD / "project.sqlite").exists():
+            rows.append((ALL_HARD, out / "projects" / ALL_HARD))
         name = f"wide-{axis}-middle"
         hoard = _training_hoard(out / "leave-one-out" / "hoards" / name, axis, seed + k, workers, scale)
         project = row_project(out / "leave-one-out" / "projects" / name, hoard, workers)
@@ -118,9 +129,10 @@ def _judge(
     from coindie.project import open_project
 
     project, hoard = open_project(folder), out / "hoards" / folder.name
+    row = ALL_HARD if level == ALL_HARD else f"{axis}:{level}"
     judged = []
     for label, model in models.items():
-        r = evaluate_row(f"{axis}:{level}", "relief", model, project, hoard)
+        r = evaluate_row(row, "relief", model, project, hoard)
         judged.append(LeaveOneOutResult(axis, level, label, r.fmi, r.ari, r.auc, n_pairs, n_same))
     return judged
 
@@ -166,5 +178,6 @@ def plot_leave_one_out(results: list[LeaveOneOutResult], path: Path) -> None:
     }
     fmi_bars(
         keys, series, path, ylabel="FMI (no labels)",
-        title="Leave one axis out: trained with the axis at its middle, tested at its extremes",
+        title="Leave one axis out: trained with the axis at its middle, tested at its extremes and on "
+        "the all-hard mix",
     )  # fmt: skip

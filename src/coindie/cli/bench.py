@@ -124,7 +124,7 @@ def generalization(
         bool,
         typer.Option(
             help="Per axis, train a relief model with the axis at its middle and test it on the rows "
-            "of its extremes that OUT holds (leave-one-out.md); no matrix rows are run."
+            "of its extremes and the all-hard row that OUT holds (leave-one-out.md); no matrix rows are run."
         ),
     ] = False,
     axes: Annotated[str, typer.Option(help="Comma-separated axes for --leave-one-out (default: all).")] = "",
