@@ -10,8 +10,8 @@ well, the scorer did not need to see the extreme to handle it.
 Each held-out model is also judged on the all-hard mix (the ``hard`` row, extreme ``hard`` in the
 table), when ``OUT/projects`` holds its project: there every axis is at its hard extreme at once, the
 held-out one among them. The single-axis rows separate their dies so well that every model clusters them
-without a mistake (FMI 1.000 on every extreme of the fourteen axes, BENCHMARK.md); the all-hard mix is
-where leaving an axis out of training could still show.
+without a mistake (FMI 1.000 at each of the 28 extremes, held-out and shipped models alike, BENCHMARK.md);
+the all-hard mix is where leaving an axis out of training can still show.
 
 Each training hoard is a ``study`` hoard scaled by ``scale`` (default 0.5: 40 faces), registered and
 measured like any row (a project under ``OUT/leave-one-out/projects``); the model is fitted on every
