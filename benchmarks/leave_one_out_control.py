@@ -31,6 +31,12 @@ def main() -> None:
     parser.add_argument("--scale", type=float, default=0.5, help="scale of each study hoard")
     parser.add_argument("--workers", type=int, default=2)
     args = parser.parse_args()
+    try:
+        seeds = [int(s) for s in args.seeds.split(",") if s.strip()]
+    except ValueError:
+        parser.error(f"--seeds: comma-separated integers, not {args.seeds!r}")
+    if not seeds:
+        parser.error("--seeds: give at least one seed")
     folder = args.out / "projects" / ALL_HARD
     if not (folder / "project.sqlite").exists():
         raise SystemExit(
@@ -40,7 +46,7 @@ def main() -> None:
     shipped = default_scorer("relief")
     print("| training hoard | training pairs (same-die) | FMI on the all-hard row | AUC |")
     print("|---|---|---|---|")
-    for seed in (int(s) for s in args.seeds.split(",") if s.strip()):
+    for seed in seeds:
         hoard = args.out / "control" / "hoards" / f"wide-{seed}"
         synthesize(hoard, preset="study", scale=args.scale, physics=physics_by_name("wide"), seed=seed,
                    workers=args.workers)  # fmt: skip
