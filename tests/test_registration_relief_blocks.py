@@ -7,7 +7,13 @@ import numpy as np
 import pytest
 from scipy import ndimage
 
-from coindie.registration.relief_blocks import FineRelief, refine_planar
+from coindie.registration.relief_blocks import (
+    FineRelief,
+    _shifted_tile_products,
+    _weighted_rigid,
+    _window_sums,
+    refine_planar,
+)
 
 PIXEL = 0.1  # mm
 DIE_PX = 400
@@ -127,3 +133,34 @@ def test_relief_moves_a_pose_off_in_the_plane_back_to_the_truth_and_keeps_a_righ
     T_kept, note = estimator._block_matched(pair.T_target_source, source, target)
     np.testing.assert_array_equal(T_kept, pair.T_target_source)
     assert "refused" in note or "within a pixel" in note
+
+
+def test_window_sums_are_the_sums_over_each_window_at_each_shift() -> None:
+    rng = np.random.default_rng(3)
+    tile, side = 4, 5
+    fixed = rng.standard_normal((6 * tile, 5 * tile)).astype(np.float32)
+    moving = rng.standard_normal((fixed.shape[0] + side - 1, fixed.shape[1] + side - 1)).astype(np.float32)
+    sums = _window_sums(moving, tile, side)
+    products = _shifted_tile_products(moving, fixed, tile, side)
+    assert sums.shape == (side, side, 5, 4) and products.shape == (side, side, 6, 5)
+    for i, j, k, n in [(0, 0, 0, 0), (4, 2, 3, 1), (1, 3, 4, 3), (2, 4, 2, 2)]:
+        box = moving[k * tile + i : k * tile + i + 2 * tile, n * tile + j : n * tile + j + 2 * tile]
+        assert sums[i, j, k, n] == pytest.approx(box.astype(np.float64).sum(), abs=1e-9)
+        shifted = moving[i : i + fixed.shape[0], j : j + fixed.shape[1]]
+        product = (shifted.astype(np.float64) * fixed)[k * tile : (k + 1) * tile, n * tile : (n + 1) * tile]
+        assert products[i, j, k, n] == pytest.approx(product.sum(), abs=1e-5)
+
+
+def test_the_weighted_rigid_fit_recovers_a_turn_and_a_shift_and_never_reflects() -> None:
+    rng = np.random.default_rng(4)
+    source = rng.uniform(-10, 10, (30, 2))
+    for angle in (0.3, -2.9, 3.1):
+        c, s = np.cos(angle), np.sin(angle)
+        R_true = np.array([[c, -s], [s, c]])
+        target = source @ R_true.T + [0.4, -1.2]
+        weight = rng.uniform(0.1, 1.0, len(source))
+        R, t = _weighted_rigid(source, target, weight)
+        assert np.allclose(R, R_true, atol=1e-12) and np.allclose(t, [0.4, -1.2], atol=1e-12)
+    # points mirrored: the best proper rotation, never a reflection
+    R, _ = _weighted_rigid(source, source * [1.0, -1.0], np.ones(len(source)))
+    assert np.linalg.det(R) == pytest.approx(1.0)
