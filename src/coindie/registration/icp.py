@@ -72,7 +72,13 @@ def _step(moved: FloatArray, target: Cloud, max_distance: float) -> tuple[FloatA
     p, n = moved[near], target.normals[index[near]]
     r = np.einsum("ij,ij->i", p - target.points[index[near]], n)
     centre = p.mean(axis=0)
-    J = np.hstack([np.cross(p - centre, n), n])
+    a = p - centre
+    J = np.empty((n_pairs, 6))
+    # (p - centre) x n, written out: np.cross's generic path cost a tenth of an iteration
+    J[:, 0] = a[:, 1] * n[:, 2] - a[:, 2] * n[:, 1]
+    J[:, 1] = a[:, 2] * n[:, 0] - a[:, 0] * n[:, 2]
+    J[:, 2] = a[:, 0] * n[:, 1] - a[:, 1] * n[:, 0]
+    J[:, 3:] = n
     A = J.T @ J
     A += _DAMPING * np.trace(A) * np.eye(6)
     step = np.linalg.solve(A, -J.T @ r)

@@ -66,7 +66,8 @@ class ProjectedCloud(Cloud):
         found[inside] = self.pixels[rows[inside], cols[inside]]
         distances = np.full(len(points), np.inf)
         hit = found >= 0
-        distances[hit] = np.linalg.norm(points[hit] - self.points[found[hit]], axis=1)
+        gap = points[hit] - self.points[found[hit]]
+        distances[hit] = np.sqrt(np.einsum("ij,ij->i", gap, gap))
         far = distances > max_distance
         distances[far] = np.inf
         index = np.where(far, len(self.points), found)
