@@ -118,6 +118,8 @@ def test_a_same_die_pair_whose_registration_was_lost_comes_back_through_a_third_
     project, _ = init_project(tmp_path / "project", hoard, hoard / "labels.csv")
     run_project(project, RunConfig(workers=2, mode="exhaustive", relay_neighbours=0), echo=lambda _: None)
     pairs = project.scored_pairs()
+    # the relief scorer does not read the paper's distance histogram: a run measures none unless asked
+    assert pairs and all(q["histogram"] is None for q in pairs)
     p = {(q["source"], q["target"]): float(q["probability"]) for q in pairs}
     same = sorted((q for q in pairs if die[q["source"]] == die[q["target"]]), key=lambda q: -q["probability"])
 
@@ -134,16 +136,19 @@ def test_a_same_die_pair_whose_registration_was_lost_comes_back_through_a_third_
             ("[[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]", a, b),
         )
     project = open_project(tmp_path / "project")
-    report = run_project(project, RunConfig(workers=2, mode="exhaustive"), echo=lambda _: None)
+    config = RunConfig(workers=2, mode="exhaustive", histograms=True)
+    report = run_project(project, config, echo=lambda _: None)
     assert report.pairs_done == 0 and report.relays_tried > 0 and report.relays_kept >= 1
     after = {(q["source"], q["target"]): q for q in project.scored_pairs()}
     back = after[a, b]
     assert back["valid"] and back["probability"] > 0.5, back["reason"]
     assert rotation_error_deg(true_transform(truth, a, b), back["T_target_source"]) < 1.0
     assert translation_error_mm(true_transform(truth, a, b), back["T_target_source"]) < 0.3
-    # the relay measured the paper's histogram at its pose (relays that cannot be kept measure none)
+    # asked for histograms, the relay measured the paper's at its pose (relays that cannot be kept measure
+    # none); the pairs already done are not scored again for it
     settings = default_scorer().settings
     assert np.isclose(back["histogram"].sum() * settings.max_distance_mm / settings.bins, 1.0, atol=1e-3)
+    assert sum(q["histogram"] is not None for q in after.values()) == report.relays_kept
     for key, q in after.items():
         if die[key[0]] != die[key[1]]:
             assert q["probability"] < 0.5 or p[key] >= 0.5, key

@@ -16,6 +16,7 @@ from PIL import Image
 
 from coindie.clustering import read_graph
 from coindie.serve import create_app, open_source
+from coindie.similarity.histogram import HistogramSettings
 from real_data import RIEDONES3D
 
 TOKEN = "t0ken-for-tests"
@@ -266,3 +267,20 @@ def test_serve_bare_beard_graph_loads_without_images(tmp_path):
     assert client.get("/api/faces/L1D", headers=HEADERS).json()["face"] == "L0001D"
     client.post("/api/edits", json={"action": "cut", "a": "L1D", "b": "L2D", "base_seq": 0}, headers=HEADERS)
     assert (tmp_path / "graph.json.edits.sqlite").is_file()
+
+
+def test_serve_measures_the_distance_histogram_of_a_pair_whose_run_did_not(served):
+    """coindie run leaves the paper's histogram out for the relief scorer; the pair view measures it from
+    the scans at the pair's pose: a density over 0..max distance, most of it near 0 for a registered
+    same-die pair."""
+    source, client = served
+    a, b = _pair(source)
+    assert source.pair_record(a, b).histogram is None  # the run did not measure it
+    info = client.get(f"/api/pairs/{a}/{b}", headers=HEADERS).json()
+    histogram = np.asarray(info["histogram"])
+    settings = HistogramSettings()
+    assert histogram.shape == (settings.bins,)
+    width = info["max_distance_mm"] / settings.bins
+    assert histogram.sum() * width == pytest.approx(1.0, abs=1e-6)
+    near = int(round(0.1 / width))  # the share of distances under 0.1 mm
+    assert histogram[:near].sum() * width > 0.5

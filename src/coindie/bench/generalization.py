@@ -137,7 +137,7 @@ def row_project(folder: Path, hoard: Path, workers: int) -> Any:
     # and each scorer applied to what it stored (as coindie run would apply it). The run is the shipped
     # default's, relays included (coindie.project.relay): a relay keeps the pose the default scorer scores
     # higher, and the paper's scorer is measured on those same poses.
-    config = RunConfig(mode="exhaustive", workers=workers)
+    config = RunConfig(mode="exhaustive", workers=workers, histograms=True)
     run_project(project, config, echo=lambda line: None)
     return project
 

@@ -62,6 +62,13 @@ def run(
     ] = "relief",
     batch_faces: Annotated[int, typer.Option(help="Faces per side of a batch's tile.")] = 16,
     retry_failed: Annotated[bool, typer.Option(help="Score again the pairs that failed before.")] = False,
+    histograms: Annotated[
+        bool,
+        typer.Option(
+            help="Measure the paper's distance histogram of every pair (a fifth of a pair's time; the "
+            "paper scorer always does, the review app measures an opened pair's)."
+        ),
+    ] = False,
     relay_neighbours: Annotated[
         int,
         typer.Option(help="Register pairs again through each face's N best partners (0: no relays)."),
@@ -93,6 +100,7 @@ def run(
         classifier=str(classifier) if classifier else None,
         scorer=scorer,
         retry_failed=retry_failed,
+        histograms=histograms,
         relay_neighbours=relay_neighbours,
         relay_rounds=relay_rounds,
         plan_only=plan_only,

@@ -87,6 +87,11 @@ class RunConfig(Configurable):
         0.1, doc="grid of the clouds registered (0: none)", unit="mm", low=0.0
     )
     retry_failed: bool = param(False, doc="score again the pairs that failed")
+    histograms: bool = param(
+        False,
+        doc="measure the paper's distance histogram of every pair, not only where the scorer reads it "
+        "(the paper scorer's input; the review app measures a pair's histogram when it is opened)",
+    )
     plan_only: bool = param(False, doc="prepare the faces and plan the pairs, score none")
     relay_neighbours: int = param(
         DEFAULT_NEIGHBOURS, doc="partners per face the relays go through (0: no relays)", low=0
@@ -219,6 +224,8 @@ def _scorer(config: RunConfig) -> _Scorer:
         "method_params": dict(config.method_params),
         "registration_grid_mm": config.registration_grid_mm,
         "classifier": classifier_dict,
+        # not part of the pairs' identity: a histogram adds to a pair's figures and changes none of them
+        "histograms": config.histograms,
     }
     identity = {
         "pair_function": PAIR_FUNCTION_VERSION,

@@ -525,9 +525,9 @@ class Project:
                 before = float(found["probability"] or 0.0) if found else None
                 after = r.get("probability") if r["status"] == "done" else None
                 keep = before is not None and after is not None and log_odds_gain(before, after) > min_gain
-                # a relay measures the distance histogram only where it beat its pair's probability of
-                # when it was planned, which a pair's probability now can only have raised
-                keep = keep and r.get("histogram") is not None
+                # A relay measures the distance histogram (where the run measures histograms) only where
+                # it beat its pair's probability of when it was planned, which a pair's probability now
+                # can only have raised: a relay kept here has its histogram, or the run measures none.
                 if keep:
                     db.execute(
                         "UPDATE pairs SET method = ?, valid = ?, reason = ?, probability = ?, residual = ?, "

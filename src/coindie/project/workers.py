@@ -182,6 +182,7 @@ class _Worker:
         self.registrar: SampledRegistrar | None = None
         self.classifier: Any = None
         self.sampled_faces: FaceCache | None = None
+        self.histograms = True  # every pair's distance histogram measured (RunConfig.histograms)
 
     def configure(self, config_text: str, cache_faces: int) -> None:
         if config_text == self.config_text:
@@ -204,6 +205,7 @@ class _Worker:
         self.registrar = SampledRegistrar(method, config["registration_grid_mm"])
         self.sampled_faces = LRUCache(max(FACE_CACHE_SIZE, 2 * cache_faces + 4))
         self.classifier = scorer_from_dict(config["classifier"], "the run's classifier")
+        self.histograms = bool(config.get("histograms", True))
         self.config_text = config_text
         self.cache_faces = cache_faces
 
@@ -250,8 +252,9 @@ class RelayBatch:
 
 def relay_batch(batch: RelayBatch) -> list[dict[str, Any]]:
     """Score every pair of the batch from its given pose; each row as :func:`score_batch`'s, with ``via``.
-    The paper's distance histogram (a fifth of a relay's time) is measured only for the relays the project
-    can keep, those that raise their pair's log-odds by more than ``min_gain``; the others have none."""
+    The paper's distance histogram (a fifth of a relay's time), where the run measures histograms, is
+    measured only for the relays the project can keep, those that raise their pair's log-odds by more than
+    ``min_gain``; the others have none."""
     from coindie.project.relay import log_odds_gain
 
     _WORKER.configure(batch.config, batch.cache_faces)
@@ -274,13 +277,17 @@ def _score_row(
     T_init: np.ndarray | None = None,
     histogram_if: Callable[[float], bool] | None = None,
 ) -> dict[str, Any]:
-    """One pair scored, as a row of the project's ``pairs``; ``histogram_if``: the distance histogram is
-    measured only where it holds of the probability (``histogram`` None where not)."""
+    """One pair scored, as a row of the project's ``pairs`` (``histogram`` None where the distance
+    histogram was not measured); ``histogram_if``: where the run measures histograms, measured only where
+    it holds of the probability."""
     from coindie.similarity import add_histogram, score_pair
 
     cpu = time.process_time()
-    # the paper scorer reads the histogram: measured with the pair whatever ``histogram_if`` says
-    measured = histogram_if is None or _WORKER.classifier.INPUT == "histogram"
+    # The paper scorer reads the histogram: measured with the pair whatever ``histogram_if`` says. For the
+    # relief scorer it is a fifth of a pair's time, read by nobody but the review app (which measures it
+    # when a pair is opened): measured only when the run asks for every pair's (RunConfig.histograms).
+    wanted = _WORKER.histograms
+    measured = (wanted and histogram_if is None) or _WORKER.classifier.INPUT == "histogram"
     try:
         source = _WORKER.face(source_id, files[source_id])
         target = _WORKER.face(target_id, files[target_id])
@@ -294,7 +301,13 @@ def _score_row(
             T_init=T_init,
             with_histogram=measured,
         )
-        if histogram_if is not None and not measured and score.valid and histogram_if(score.probability):
+        if (
+            wanted
+            and histogram_if is not None
+            and not measured
+            and score.valid
+            and histogram_if(score.probability)
+        ):
             score = add_histogram(score, source, target, _WORKER.classifier.settings, _WORKER.sampled_faces)
             measured = True
     except Exception as error:  # one bad pair is recorded with its reason; the batch goes on

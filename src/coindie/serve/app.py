@@ -277,6 +277,13 @@ def create_app(source: ReviewSource, token: str, hosts: set[str] | None = None) 
     def pair_info(a: str, b: str) -> dict[str, Any]:
         record = source.pair_record(a, b)
         settings = HistogramSettings()
+        histogram = None if record.histogram is None else np.asarray(record.histogram).tolist()
+        if histogram is None and record.valid and record.T_target_source is not None and source.has_images:
+            # the run did not measure it (coindie run --histograms): measured now, from the scans
+            key = tuple(float(v) for v in np.asarray(record.T_target_source).ravel())
+            histogram = list(
+                images.pair_histogram(scan_path(record.target), scan_path(record.source), key, source.unit)
+            )
         return {
             "target": record.target,
             "source": record.source,
@@ -286,7 +293,7 @@ def create_app(source: ReviewSource, token: str, hosts: set[str] | None = None) 
             "method": record.method,
             "origin": record.origin,
             "T_target_source": None if record.T_target_source is None else record.T_target_source.tolist(),
-            "histogram": None if record.histogram is None else np.asarray(record.histogram).tolist(),
+            "histogram": histogram,
             "max_distance_mm": settings.max_distance_mm,
             "has_images": source.has_images,
         }

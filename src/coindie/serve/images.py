@@ -24,7 +24,7 @@ from coindie.preprocess.canonical import CanonicalFrame, canonical_frame
 from coindie.preprocess.heightmap import HeightMap, height_map
 from coindie.render import TONES, hillshade, render_relief
 from coindie.scan import Scan
-from coindie.similarity.histogram import HistogramSettings, c2c_distances, sampled_face
+from coindie.similarity.histogram import HistogramSettings, c2c_distances, c2c_histogram, sampled_face
 from coindie.transforms import apply
 
 #: Height difference (mm) shown at full colour in the difference view.
@@ -170,6 +170,19 @@ def aligned_pair(
     target_values = _placed(reliefs[0], grid)
     heat[~np.isfinite(target_values)] = np.nan  # a distance to the target means something only over it
     return AlignedPair(grid, target_values, _placed(reliefs[1], grid), heat)
+
+
+@lru_cache(maxsize=256)
+def pair_histogram(
+    target_path: Path, source_path: Path, T_key: tuple[float, ...], unit: str | None = None
+) -> tuple[float, ...]:
+    """The paper's distance histogram of a pair at its pose (``T_key``: T_target_source, row by row), for
+    a pair whose run did not measure it (``coindie run`` measures it only with ``--histograms`` or for the
+    paper scorer)."""
+    T_target_source = np.asarray(T_key, dtype=np.float64).reshape(4, 4)
+    target, _ = face_scan(target_path, unit)
+    source, _ = face_scan(source_path, unit)
+    return tuple(float(v) for v in c2c_histogram(source, target, T_target_source, HistogramSettings()))
 
 
 def pair_image(aligned: AlignedPair, kind: str) -> bytes:
