@@ -50,7 +50,9 @@ def main() -> None:
         hoard = args.out / "control" / "hoards" / f"wide-{seed}"
         synthesize(hoard, preset="study", scale=args.scale, physics=physics_by_name("wide"), seed=seed,
                    workers=args.workers)  # fmt: skip
-        project = row_project(args.out / "control" / "projects" / f"wide-{seed}", hoard, args.workers)
+        project = row_project(
+            args.out / "control" / "projects" / f"wide-{seed}", hoard, args.workers, histograms=False
+        )
         model, n_pairs, n_same = train_on_project(project, hoard, like=shipped)
         r = evaluate_row(ALL_HARD, "relief", model, hard, hard_hoard)
         print(f"| wide, seed {seed} | {n_pairs} ({n_same}) | {r.fmi:.3f} | {r.auc:.3f} |", flush=True)

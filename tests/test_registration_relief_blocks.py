@@ -10,8 +10,8 @@ from scipy import ndimage
 from coindie.registration.relief_blocks import (
     FineRelief,
     _shifted_tile_products,
+    _shifted_window_sums,
     _weighted_rigid,
-    _window_sums,
     refine_planar,
 )
 
@@ -140,7 +140,7 @@ def test_window_sums_are_the_sums_over_each_window_at_each_shift() -> None:
     tile, side = 4, 5
     fixed = rng.standard_normal((6 * tile, 5 * tile)).astype(np.float32)
     moving = rng.standard_normal((fixed.shape[0] + side - 1, fixed.shape[1] + side - 1)).astype(np.float32)
-    sums = _window_sums(moving, tile, side)
+    sums = _shifted_window_sums(moving, tile, side)
     products = _shifted_tile_products(moving, fixed, tile, side)
     assert sums.shape == (side, side, 5, 4) and products.shape == (side, side, 6, 5)
     for i, j, k, n in [(0, 0, 0, 0), (4, 2, 3, 1), (1, 3, 4, 3), (2, 4, 2, 2)]:

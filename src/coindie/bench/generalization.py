@@ -128,7 +128,7 @@ def _hoard(folder: Path, row: str, seed: int, workers: int, riedones_scale: floa
     return folder
 
 
-def row_project(folder: Path, hoard: Path, workers: int) -> Any:
+def row_project(folder: Path, hoard: Path, workers: int, *, histograms: bool = True) -> Any:
     from coindie.project import init_project, open_project
     from coindie.project.run import RunConfig, run_project
 
@@ -136,8 +136,9 @@ def row_project(folder: Path, hoard: Path, workers: int) -> Any:
     # Every pair stores both scorers' inputs (relief features and histogram), so a project is scored once
     # and each scorer applied to what it stored (as coindie run would apply it). The run is the shipped
     # default's, relays included (coindie.project.relay): a relay keeps the pose the default scorer scores
-    # higher, and the paper's scorer is measured on those same poses.
-    config = RunConfig(mode="exhaustive", workers=workers, histograms=True)
+    # higher, and the paper's scorer is measured on those same poses. ``histograms=False``: a project that
+    # only trains or judges the relief scorer (leave-one-out's training hoards) leaves the histogram out.
+    config = RunConfig(mode="exhaustive", workers=workers, histograms=histograms)
     run_project(project, config, echo=lambda line: None)
     return project
 

@@ -83,7 +83,7 @@ def run_leave_one_out(
             rows.append((ALL_HARD, out / "projects" / ALL_HARD))
         name = f"wide-{axis}-middle"
         hoard = _training_hoard(out / "leave-one-out" / "hoards" / name, axis, seed + k, workers, scale)
-        project = row_project(out / "leave-one-out" / "projects" / name, hoard, workers)
+        project = row_project(out / "leave-one-out" / "projects" / name, hoard, workers, histograms=False)
         model, n_pairs, n_same = train_on_project(project, hoard, like=shipped)
         for level, folder in rows:
             results += _judge(axis, level, folder, out, model, shipped, shipped_on, n_pairs, n_same)

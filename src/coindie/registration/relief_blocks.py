@@ -222,7 +222,7 @@ def _match(
     area = 4.0 * tile * tile
     sum_b, sum_bb, cover_b = fixed_level.window_sums(tile)
     side = 2 * reach + 1
-    sum_a, sum_aa = (_window_sums(image, tile, side) for image in (moving, moving * moving))
+    sum_a, sum_aa = (_shifted_window_sums(image, tile, side) for image in (moving, moving * moving))
     cover_a = _windows_of(_tile_sums(seen, n_rows, tile, n_cols))
     usable = (cover_b >= _MIN_COVER * area) & (cover_a >= _MIN_COVER * area)
     if not usable.any():
@@ -286,7 +286,7 @@ def _windows_of(tiles: NDArray[np.float64]) -> NDArray[np.float64]:
     return tiles[..., :-1, :-1] + tiles[..., 1:, :-1] + tiles[..., :-1, 1:] + tiles[..., 1:, 1:]
 
 
-def _window_sums(image: NDArray[np.float32], tile: int, side: int) -> NDArray[np.float64]:
+def _shifted_window_sums(image: NDArray[np.float32], tile: int, side: int) -> NDArray[np.float64]:
     """Sums of the padded moving ``image`` over every window (2 x 2 tiles, overlapping by one) at every
     shift (i, j) < ``side``: (side, side, window rows, window columns), the window of index (k, l) at
     shift (i, j) starting at (k tile + i, l tile + j).

@@ -24,7 +24,7 @@ from coindie.preprocess.canonical import CanonicalFrame, canonical_frame
 from coindie.preprocess.heightmap import HeightMap, height_map
 from coindie.render import TONES, hillshade, render_relief
 from coindie.scan import Scan
-from coindie.similarity.histogram import HistogramSettings, c2c_distances, c2c_histogram, sampled_face
+from coindie.similarity.histogram import HistogramSettings, c2c_distances, density_histogram, sampled_face
 from coindie.transforms import apply
 
 #: Height difference (mm) shown at full colour in the difference view.
@@ -149,7 +149,7 @@ def aligned_pair(
     ]
     grid = _union_grid(reliefs, resolution)
     settings = HistogramSettings()
-    distances = c2c_distances(source, target, T_target_source, settings)
+    distances = _pair_distances(target_path, source_path, T_key, unit)
     points = sampled_face(source, settings.source_grid_mm, settings.max_normal_angle_rad).points
     canonical = apply(frame.T_canonical_scan @ T_target_source, points)
     rows = np.rint((grid.y0 - canonical[:, 1]) / resolution).astype(np.int64)
@@ -172,17 +172,31 @@ def aligned_pair(
     return AlignedPair(grid, target_values, _placed(reliefs[1], grid), heat)
 
 
+@lru_cache(maxsize=16)
+def _pair_distances(
+    target_path: Path, source_path: Path, T_key: tuple[float, ...], unit: str | None = None
+) -> NDArray[np.float64]:
+    """The c2c distances of a pair at its pose (``T_key``: T_target_source, row by row), default histogram
+    settings: what the heat map and the histogram of an opened pair both read, searched once."""
+    T_target_source = np.asarray(T_key, dtype=np.float64).reshape(4, 4)
+    target, _ = face_scan(target_path, unit)
+    source, _ = face_scan(source_path, unit)
+    distances = c2c_distances(source, target, T_target_source, HistogramSettings())
+    distances.setflags(write=False)  # shared by every caller of the cache
+    return distances
+
+
 @lru_cache(maxsize=256)
 def pair_histogram(
     target_path: Path, source_path: Path, T_key: tuple[float, ...], unit: str | None = None
 ) -> tuple[float, ...]:
     """The paper's distance histogram of a pair at its pose (``T_key``: T_target_source, row by row), for
     a pair whose run did not measure it (``coindie run`` measures it only with ``--histograms`` or for the
-    paper scorer)."""
-    T_target_source = np.asarray(T_key, dtype=np.float64).reshape(4, 4)
-    target, _ = face_scan(target_path, unit)
-    source, _ = face_scan(source_path, unit)
-    return tuple(float(v) for v in c2c_histogram(source, target, T_target_source, HistogramSettings()))
+    paper scorer): :func:`~coindie.similarity.histogram.c2c_histogram` with the default (one-way)
+    settings, from the distances the pair's heat map reads."""
+    settings = HistogramSettings()
+    distances = _pair_distances(target_path, source_path, T_key, unit)
+    return tuple(float(v) for v in density_histogram(distances, settings))
 
 
 def pair_image(aligned: AlignedPair, kind: str) -> bytes:
