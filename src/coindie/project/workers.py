@@ -182,7 +182,7 @@ class _Worker:
         self.registrar: SampledRegistrar | None = None
         self.classifier: Any = None
         self.sampled_faces: FaceCache | None = None
-        self.histograms = False  # every pair's distance histogram measured (RunConfig.histograms)
+        self.histograms = True  # every pair's distance histogram measured (RunConfig.histograms)
 
     def configure(self, config_text: str, cache_faces: int) -> None:
         if config_text == self.config_text:
@@ -205,7 +205,8 @@ class _Worker:
         self.registrar = SampledRegistrar(method, config["registration_grid_mm"])
         self.sampled_faces = LRUCache(max(FACE_CACHE_SIZE, 2 * cache_faces + 4))
         self.classifier = scorer_from_dict(config["classifier"], "the run's classifier")
-        self.histograms = bool(config["histograms"])
+        # a config that does not say (one written by hand, or before the option) measures them, as before
+        self.histograms = bool(config.get("histograms", True))
         self.config_text = config_text
         self.cache_faces = cache_faces
 
