@@ -34,6 +34,7 @@ from coindie.similarity.calibration import (
 
 if TYPE_CHECKING:
     from coindie.clustering import ProbabilityGraph
+    from coindie.clustering.second_pass import TwoPassResult
     from coindie.clustering.threshold import ThresholdChoice
 
 DB_NAME = "project.sqlite"
@@ -668,7 +669,6 @@ class Project:
         calibration's clusters are kept if they stand out (:func:`cluster_twice`)."""
         from coindie.clustering import PAPER_THRESHOLD
         from coindie.clustering.algorithms import ConsensusLinkage
-        from coindie.clustering.second_pass import cluster_twice
 
         graph = self.probability_graph(side)
         if graph.n_nodes < 3:
@@ -676,11 +676,7 @@ class Project:
         if method != ConsensusLinkage.NAME:
             return graph, *self.auto_threshold(side, method, graph), {}
         calibration = self.calibration(side)
-        result = cluster_twice(
-            lambda across: graph if across is None else self.probability_graph(side, across=across),
-            method,
-            partial(self._vetoed_mixture, side, calibration),
-        )
+        result = self._cluster_twice(side, method, graph, calibration)
         note = ""
         if result.second_pass:
             note = f", each face's pull taken off (first clusters' silhouette {result.first_silhouette:.2f})"
@@ -692,6 +688,34 @@ class Project:
         separates = calibration.separates or result.overruled_scorer
         how = _consensus_how(result.choice, note, separates=separates)
         return result.graph, result.choice.threshold, how, result.params
+
+    def overrule_silhouette(self, side: str, method: str = "consensus") -> float | None:
+        """Where the scorer vetoed ``side``'s own calibration (:attr:`coindie.similarity.HoardCalibration.
+        vetoed`) and ``coindie cluster --auto`` keeps the clusters of the hoard's own mixture all the same,
+        because they stand out: how far (their mean silhouette). None otherwise: no veto, or its clusters
+        do not stand out (the veto stands, and so does the warning of :mod:`coindie.project.status`)."""
+        calibration = self.calibration(side)
+        if not calibration.vetoed:
+            return None
+        graph = self.probability_graph(side)
+        if graph.n_nodes < 3:
+            return None
+        result = self._cluster_twice(side, method, graph, calibration)
+        return result.overrule_silhouette if result.overruled_scorer else None
+
+    def _cluster_twice(
+        self, side: str, method: str, graph: ProbabilityGraph, calibration: HoardCalibration
+    ) -> TwoPassResult:
+        """:func:`coindie.clustering.second_pass.cluster_twice` on ``side`` (``graph``: its calibrated
+        graph, ``calibration`` its calibration), the hoard's own mixture tried where the scorer vetoed
+        it."""
+        from coindie.clustering.second_pass import cluster_twice
+
+        return cluster_twice(
+            lambda across: graph if across is None else self.probability_graph(side, across=across),
+            method,
+            partial(self._vetoed_mixture, side, calibration),
+        )
 
     def _vetoed_mixture(
         self, side: str, first: HoardCalibration, across: Mapping[str, object] | None

@@ -1,0 +1,78 @@
+"""What ``coindie run`` and ``coindie status`` say of a hoard's scores: a split that the scorer's own scale
+refused but whose clusters stand out is told with its numbers, not as a warning; a split whose clusters
+do not stand out keeps the warning."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from coindie.project import Project, init_project
+from coindie.project.status import separation_lines
+
+
+def _project(folder: Path, same: np.ndarray, log_odds: np.ndarray, n_faces: int) -> Project:
+    """A project whose obverse pairs (every pair of ``n_faces`` faces, in ``np.triu_indices`` order)
+    were scored at ``log_odds``; its scans are never read (empty files), only listed."""
+    scans = folder / "scans"
+    scans.mkdir(parents=True)
+    names = [f"L{k + 1:04d}D" for k in range(n_faces)]
+    for name in names:
+        (scans / f"{name}.ply").write_bytes(b"")
+    project, _ = init_project(folder / "project", scans)
+    for name in names:
+        project.record_face(name, "h", content_hash=name, file="", n_points=1, descriptor=b"", seconds=0.0)
+    run = project.start_run("h", "{}", "test", 0, "here")
+    i, j = np.triu_indices(n_faces, k=1)
+    project.plan_pairs("h", "D", "exhaustive", run, [(names[a], names[b]) for a, b in zip(i, j, strict=True)])
+    probabilities = 1.0 / (1.0 + np.exp(-log_odds))
+    done = {"status": "done", "method": "relief", "valid": True, "reason": "", "T_target_source": "[]",
+            "histogram": None, "features": b""}  # fmt: skip
+    rows = [
+        {**done, "source": names[a], "target": names[b], "probability": float(p)}
+        for a, b, p in zip(i, j, probabilities, strict=True)
+    ]
+    project.commit_pairs("h", run, rows, 0.0)
+    return project
+
+
+def _scores(upper: np.ndarray, seed: int) -> np.ndarray:
+    """Scans unlike the scorer's training scans: the ``upper`` pairs near log-odds -5, the others near -16,
+    every one judged different-die by the scorer."""
+    rng = np.random.default_rng(seed)
+    return np.where(upper, -5.0, -16.0) + rng.normal(0.0, 1.2, len(upper))
+
+
+@pytest.mark.parametrize("seed", range(2))
+def test_a_vetoed_split_whose_clusters_stand_out_is_told_without_a_warning(tmp_path: Path, seed: int) -> None:
+    die = np.repeat(np.arange(7), [9, 7, 6, 5, 4, 3, 2])
+    i, j = np.triu_indices(len(die), k=1)
+    project = _project(tmp_path, die[i] == die[j], _scores(die[i] == die[j], seed), len(die))
+    calibration = project.calibration("D")
+    assert calibration.vetoed and not calibration.separates
+    (line,) = separation_lines(project)
+    assert not line.startswith("WARNING"), line
+    assert "judges different-die" in line and "stand out" in line
+    # the numbers told are the calibration's and the clustering's own
+    assert f"Ashman's D {calibration.separation:.2f}" in line
+    assert f"{calibration.same_share:.1%} in an upper population" in line
+    silhouette = project.overrule_silhouette("D")
+    assert silhouette is not None and f"silhouette {silhouette:.2f}" in line
+
+
+@pytest.mark.parametrize("seed", range(2))
+def test_a_vetoed_split_whose_clusters_do_not_stand_out_keeps_the_warning(tmp_path: Path, seed: int) -> None:
+    """The same two populations, but a third of the pairs in the upper one, drawn at random: they form no
+    dies (a link from one coin to two others is no link between those two), so no cut's clusters stand
+    out and the veto stands. (At an eighth of the pairs, a random link pattern is mostly disjoint pairs of
+    faces, which do stand out.)"""
+    n_faces = 36
+    i, _ = np.triu_indices(n_faces, k=1)
+    upper = np.random.default_rng(seed).random(len(i)) < 0.3
+    project = _project(tmp_path, upper, _scores(upper, seed), n_faces)
+    assert project.calibration("D").vetoed
+    assert project.overrule_silhouette("D") is None
+    (line,) = separation_lines(project)
+    assert line.startswith("WARNING, side D:") and "do not separate" in line
