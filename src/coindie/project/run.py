@@ -53,8 +53,9 @@ from coindie.project.workers import (
 )
 from coindie.similarity.scorers import SCORERS
 
-#: ``auto`` plans every pair of a side up to this many faces (2 x 19,900 pairs for two such sides: ~20 min
-#: on 2 idle cores at the measured 0.06 CPU-s per pair); above it, the candidate search (BENCHMARK.md).
+#: ``auto`` plans every pair of a side up to this many faces (2 x 19,900 pairs for two such sides: about
+#: 35 min on 2 idle cores at the 0.10 CPU-s a pair measured on an all-hard hoard, registration and relief
+#: features, BENCHMARK.md); above it, the candidate search.
 AUTO_EXHAUSTIVE_MAX_FACES = 200
 #: Candidates per face in candidate mode (see BENCHMARK.md, "Candidate search", for the recall vs K).
 DEFAULT_K = 20

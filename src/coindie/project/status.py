@@ -100,7 +100,7 @@ def separation_lines(project: Project) -> list[str]:
         if calibration.separates:
             lines.append(f"scores of side {side}: {calibration.message}")
             continue
-        silhouette = project.overrule_silhouette(side)
+        silhouette = project.overrule_silhouette(side, calibration=calibration)
         if silhouette is not None:
             lines.append(f"scores of side {side}: {_overruled(calibration, side, silhouette)}")
             continue

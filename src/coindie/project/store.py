@@ -689,12 +689,16 @@ class Project:
         how = _consensus_how(result.choice, note, separates=separates)
         return result.graph, result.choice.threshold, how, result.params
 
-    def overrule_silhouette(self, side: str, method: str = "consensus") -> float | None:
+    def overrule_silhouette(
+        self, side: str, method: str = "consensus", calibration: HoardCalibration | None = None
+    ) -> float | None:
         """Where the scorer vetoed ``side``'s own calibration (:attr:`coindie.similarity.HoardCalibration.
         vetoed`) and ``coindie cluster --auto`` keeps the clusters of the hoard's own mixture all the same,
         because they stand out: how far (their mean silhouette). None otherwise: no veto, or its clusters
-        do not stand out (the veto stands, and so does the warning of :mod:`coindie.project.status`)."""
-        calibration = self.calibration(side)
+        do not stand out (the veto stands, and so does the warning of :mod:`coindie.project.status`).
+        ``calibration``: :meth:`calibration` of ``side``, where the caller holds it (on a side of many
+        pairs, its fit is most of the time)."""
+        calibration = self.calibration(side) if calibration is None else calibration
         if not calibration.vetoed:
             return None
         graph = self.probability_graph(side)
