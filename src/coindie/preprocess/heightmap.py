@@ -150,8 +150,9 @@ _DISC_MAX_PX = 6.0
 
 
 def _closing(observed: BoolArray, radius_px: float) -> tuple[BoolArray, BoolArray]:
-    """The pixels within ``radius_px`` (Euclidean) of an observed one, and those of them with no other
-    pixel within ``radius_px`` (the closing; the image's outside counts as neither).
+    """The pixels within ``radius_px`` (Euclidean) of an observed one (the dilation), and those with no
+    pixel outside the dilation within ``radius_px`` (the closing); beyond the image's edge is neither
+    observed nor outside.
 
     At the default settings the radius is 3 pixels (0.3 mm on 0.1 mm pixels), and a dilation and an
     erosion by the 25-pixel disc take 1.4 ms on a face's map where the two distance transforms took 3.4
