@@ -55,6 +55,7 @@ def test_a_vetoed_split_whose_clusters_stand_out_is_told_without_a_warning(tmp_p
     (line,) = separation_lines(project)
     assert not line.startswith("WARNING"), line
     assert "judges different-die" in line and "stand out" in line
+    assert f"coindie serve {project.folder}" in line  # where to look at them
     # the numbers told are the calibration's and the clustering's own
     assert f"Ashman's D {calibration.separation:.2f}" in line
     assert f"{calibration.same_share:.1%} in an upper population" in line

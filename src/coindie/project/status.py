@@ -102,7 +102,7 @@ def separation_lines(project: Project) -> list[str]:
             continue
         silhouette = project.overrule_silhouette(side, calibration=calibration)
         if silhouette is not None:
-            lines.append(f"scores of side {side}: {_overruled(calibration, side, silhouette)}")
+            lines.append(f"scores of side {side}: {_overruled(calibration, side, silhouette, project)}")
             continue
         lines.append(f"WARNING, side {side}: {calibration.message}")
         reasons = project.refusal_reasons(params, side)
@@ -110,8 +110,8 @@ def separation_lines(project: Project) -> list[str]:
     return lines
 
 
-def _overruled(calibration: HoardCalibration, side: str, silhouette: float) -> str:
-    """A vetoed split whose clusters stand out, in words and numbers."""
+def _overruled(calibration: HoardCalibration, side: str, silhouette: float, project: Project) -> str:
+    """A vetoed split whose clusters stand out, in words and numbers, and where to look at it."""
     (same, same_sd), (different, different_sd) = calibration.same, calibration.different
     what = {"D": "obverse pairs", "R": "reverse pairs"}.get(side, f"pairs of side {side}")
     refused = calibration.refused
@@ -125,7 +125,7 @@ def _overruled(calibration: HoardCalibration, side: str, silhouette: float) -> s
         f"{calibration.separation:.2f}{refused_note}) that the scorer, trained on other scans, judges "
         "different-die; its "
         f"clusters stand out (silhouette {silhouette:.2f}), so coindie cluster --auto takes them for the "
-        "dies: check a few of their pairs in the review app (coindie serve)"
+        f"dies: check a few of their pairs in the review app (coindie serve {project.folder})"
     )
 
 
