@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import asdict, dataclass, field
 from typing import Any
 
-from coindie.project.store import Project, elapsed_since
+from coindie.project.store import Project, elapsed_since, side_pairs
 from coindie.similarity.calibration import HoardCalibration
 
 
@@ -112,20 +112,11 @@ def separation_lines(project: Project) -> list[str]:
 
 def _overruled(calibration: HoardCalibration, side: str, silhouette: float, project: Project) -> str:
     """A vetoed split whose clusters stand out, in words and numbers, and where to look at it."""
-    (same, same_sd), (different, different_sd) = calibration.same, calibration.different
-    what = {"D": "obverse pairs", "R": "reverse pairs"}.get(side, f"pairs of side {side}")
-    refused = calibration.refused
-    total = calibration.n_pairs + refused
-    refused_note = ""
-    if refused:
-        refused_note = f"; {refused} of {total} ({refused / total:.0%}) refused by the registration"
     return (
-        f"{calibration.n_pairs} {what} scored: {calibration.same_share:.1%} in an upper population "
-        f"(log-odds {same:.2f} ± {same_sd:.2f} against {different:.2f} ± {different_sd:.2f}, Ashman's D "
-        f"{calibration.separation:.2f}{refused_note}) that the scorer, trained on other scans, judges "
-        "different-die; its "
-        f"clusters stand out (silhouette {silhouette:.2f}), so coindie cluster --auto takes them for the "
-        f"dies: check a few of their pairs in the review app (coindie serve {project.folder})"
+        calibration.split(side_pairs(side), "an upper population")
+        + " that the scorer, trained on other scans, judges different-die; its clusters stand out "
+        f"(silhouette {silhouette:.2f}), so coindie cluster --auto takes them for the dies: check a few of "
+        f"their pairs in the review app (coindie serve {project.folder})"
     )
 
 

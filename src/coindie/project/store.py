@@ -754,8 +754,12 @@ class Project:
     ) -> tuple[dict[str, tuple[float, float]] | None, str]:
         prior_text = self.meta(f"populations:{params_hash or self.current_params()}")
         prior = json.loads(prior_text) if prior_text else {}
-        name = {"D": "obverse", "R": "reverse"}.get(side, side)
-        return {k: (float(v[0]), float(v[1])) for k, v in prior.items()} or None, f"{name} pairs"
+        return {k: (float(v[0]), float(v[1])) for k, v in prior.items()} or None, side_pairs(side)
+
+
+def side_pairs(side: str) -> str:
+    """The pairs of a side in words (``obverse pairs``), as the calibration's lines name them."""
+    return f"{ {'D': 'obverse', 'R': 'reverse'}.get(side, side) } pairs"
 
 
 def _consensus_how(choice: ThresholdChoice, note: str, *, separates: bool) -> str:

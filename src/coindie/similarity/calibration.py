@@ -41,7 +41,7 @@ mixture's calibration all the same; whether to trust it is left to the hoard's o
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -131,6 +131,16 @@ class HoardCalibration:
         log_different = np.log1p(-w) + _log_t(z, *self.different)
         return 1.0 / (1.0 + np.exp(np.clip(log_different - log_same, -700, 700)))
 
+    def split(self, what: str, upper: str) -> str:
+        """The two populations in words and numbers: ``N {what} scored: S% in {upper} (log-odds ...,
+        Ashman's D ...)``, and the pairs the registration refused, if any."""
+        (same, same_sd), (different, different_sd) = self.same, self.different
+        return (
+            f"{self.n_pairs} {what} scored: {self.same_share:.1%} in {upper} (log-odds {same:.2f} ± "
+            f"{same_sd:.2f} against {different:.2f} ± {different_sd:.2f}, Ashman's D {self.separation:.2f})"
+            + _refused_note(self.refused, self.n_pairs + self.refused)
+        )
+
     def to_dict(self) -> dict[str, Any]:
         return asdict(self)
 
@@ -176,9 +186,7 @@ def calibrate_hoard(
         # at log-odds 22 got 0.008). It is taken no narrower than the other population's.
         sd_s = max(sd_s, sd_d)
     separation = float(np.sqrt(2.0) * (mean_s - mean_d) / np.sqrt(sd_s**2 + sd_d**2))
-    refused_note = (
-        f"; {refused} of {total} ({refused / total:.0%}) refused by the registration" if refused else ""
-    )
+    refused_note = _refused_note(refused, total)
     failures = _implausible(separation, share, len(z), max_same_share)
     judged_different = mean_s < 0.0  # by the scorer itself: its veto
     if judged_different and (scorer_veto or failures):
@@ -196,16 +204,14 @@ def calibrate_hoard(
         return _not_separated(
             z, refused, separation, reason, share, (mean_s, sd_s), (mean_d, sd_d), vetoed=alone
         )
-    message = (
-        f"{len(z)} {what} scored: {share:.1%} in the same-die population (log-odds {mean_s:.2f} ± {sd_s:.2f} "
-        f"against {mean_d:.2f} ± {sd_d:.2f}, Ashman's D {separation:.2f}){refused_note}"
-    )
+    calibration = HoardCalibration(
+        len(z), refused, share, (float(mean_s), float(sd_s)), (float(mean_d), float(sd_d)), separation, True,
+        "",
+    )  # fmt: skip
+    message = calibration.split(what, "the same-die population")
     if judged_different:
         message += " (kept although the scorer judges its typical same-die pair different-die)"
-    return HoardCalibration(
-        len(z), refused, share, (float(mean_s), float(sd_s)), (float(mean_d), float(sd_d)), separation, True,
-        message,
-    )  # fmt: skip
+    return replace(calibration, message=message)
 
 
 def calibrated_probabilities(
@@ -338,6 +344,10 @@ def _t_mixture_em(
         previous = log_likelihood
     order = np.argsort(location)
     return location[order], scale[order], weight[order]
+
+
+def _refused_note(refused: int, total: int) -> str:
+    return f"; {refused} of {total} ({refused / total:.0%}) refused by the registration" if refused else ""
 
 
 def _not_separated(
