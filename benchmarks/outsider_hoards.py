@@ -492,6 +492,9 @@ def main() -> None:
     parser.add_argument("--kinds", default=",".join(KINDS))
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--coins", type=int, default=40)
+    parser.add_argument(
+        "--dies", type=int, default=12, help="dies a side (as many as coins: every die known from one coin)"
+    )
     parser.add_argument("--evaluate", action="store_true")
     parser.add_argument("--coindie", default=str(Path(sys.executable).with_name("coindie")))
     args = parser.parse_args()
@@ -501,10 +504,13 @@ def main() -> None:
         parser.error(f"--kinds: unknown {', '.join(unknown)} (known: {', '.join(KINDS)})")
     if args.coins < 2:
         parser.error(f"--coins must be at least 2 (a hoard needs pairs). Got {args.coins}.")
+    if args.dies < 1:
+        parser.error(f"--dies must be at least 1. Got {args.dies}.")
     for name in kinds:
-        folder = args.out / f"{name}-{args.seed}"
+        folder = args.out / (f"{name}-{args.seed}" + ("" if args.dies == 12 else f"-{args.dies}dies"))
         if not (folder / "labels.csv").exists():
-            make_hoard(folder, name, args.seed * 100 + list(KINDS).index(name), coins=args.coins)
+            seed = args.seed * 100 + list(KINDS).index(name)
+            make_hoard(folder, name, seed, coins=args.coins, dies=args.dies)
         elif not (folder / "truth.json").exists():  # a hoard made before the script wrote it
             write_truth(folder, json.loads((folder / "poses.json").read_text()))
         if args.evaluate:

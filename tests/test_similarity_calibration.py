@@ -174,3 +174,45 @@ def test_em_started_far_from_another_scanners_scores_still_finds_its_same_die_pa
     calibrated = calibration.probability(log_odds(probabilities))
     assert (calibrated[same_die] > MIXTURE_THRESHOLD).mean() > 0.9
     assert (calibrated[~same_die] > MIXTURE_THRESHOLD).mean() < 0.005
+
+
+def _two_designs(n_same: int, seed: int, same=(12.0, 4.0)) -> tuple:
+    """The pairs of a 40-coin side of two designs whose dies are mostly known from one coin: ``n_same``
+    same-die pairs scored around ``same``, the other pairs of one design at log-odds -15 +- 1.2 and those
+    of two designs at -19 +- 0.6 (an independent generator's ordinary hoard of seed 19, 36 dies of 40
+    coins: 4 and 5 same-die pairs at 2.7-20, the rest as here)."""
+    rng = np.random.default_rng(seed)
+    i, j = np.triu_indices(40, k=1)
+    design_pair = (i % 2) == (j % 2)
+    same_die = np.zeros(len(i), dtype=bool)
+    same_die[rng.choice(np.flatnonzero(design_pair), n_same, replace=False)] = True
+    z = np.where(design_pair, rng.normal(-15.0, 1.2, len(i)), rng.normal(-19.0, 0.6, len(i)))
+    z[same_die] = rng.normal(*same, n_same)
+    return 1.0 / (1.0 + np.exp(-z)), same_die
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_same_die_pairs_above_the_pairs_of_one_design_keep_the_scorers_veto(seed: int) -> None:
+    """The mixture splits the pairs of one design (half of the pairs, far below log-odds 0) from those of
+    two; the scorer judges the few same-die pairs same-die, far above them. Its scale holds on these scans:
+    the split is neither kept nor left for the hoard's clusters to overrule (they would be the designs),
+    and the scorer's own probabilities tell the same-die pairs apart, in words and numbers."""
+    probabilities, same_die = _two_designs(5, seed)
+    for veto in (True, False):
+        calibration = calibrate_hoard(probabilities, scorer_veto=veto)
+        assert calibration.scorer_holds and not calibration.vetoed and not calibration.separates
+    assert "the scorer judges 5 same-die" in calibration.message
+    assert "pairs of one design" in calibration.message
+    calibrated = calibration.probability(log_odds(probabilities))
+    assert (calibrated[same_die] > 0.5).all() and (calibrated[~same_die] < 0.01).all()
+
+
+def test_a_tail_of_the_upper_population_across_log_odds_0_is_no_level_above_it() -> None:
+    """A two-scanner hoard: the same-die pairs of the better scanner score above 0, those of the worse
+    below, one population whose tail crosses 0 without a gap. The scorer's veto is still left to the
+    hoard's clusters; and so is a split whose upper pairs all score below 0."""
+    crossing, _ = _mixture(0.1, 780, seed=41, same=(-2.0, 5.0), different=(-19.0, 1.7))
+    below, _ = _mixture(0.12, 780, seed=42, same=(-9.0, 1.5), different=(-19.5, 1.0))
+    for probabilities in (crossing, below):
+        calibration = calibrate_hoard(probabilities)
+        assert calibration.vetoed and not calibration.scorer_holds, calibration.message

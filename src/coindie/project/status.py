@@ -92,12 +92,14 @@ def separation_lines(project: Project) -> list[str]:
     unlike its training scans), whose clusters stand out so that ``coindie cluster --auto`` keeps them
     (:meth:`coindie.project.Project.overrule_silhouette`), is told as such, with its numbers, not as a
     warning: the scores do separate. On the independent generator's coarse and two-scanner hoards of
-    seed 17, the warning stood over die studies of FMI 1.000."""
+    seed 17, the warning stood over die studies of FMI 1.000. Nor is a side whose pairs the scorer judges
+    same-die stand apart above the hoard's upper population (:attr:`coindie.similarity.HoardCalibration.
+    scorer_holds`): the scorer's own probabilities separate them."""
     params = project.current_params()
     lines = []
     for side in project.scored_sides(params):
         calibration = project.calibration(side, params)
-        if calibration.separates:
+        if calibration.separates or calibration.scorer_holds:
             lines.append(f"scores of side {side}: {calibration.message}")
             continue
         silhouette = project.overrule_silhouette(side, calibration=calibration)

@@ -685,7 +685,7 @@ class Project:
                 ", on the hoard's own score populations, which the scorer had judged different-die: their "
                 f"clusters stand out (silhouette {result.overrule_silhouette:.2f})"
             )
-        separates = calibration.separates or result.overruled_scorer
+        separates = calibration.separates or calibration.scorer_holds or result.overruled_scorer
         how = _consensus_how(result.choice, note, separates=separates)
         return result.graph, result.choice.threshold, how, result.params
 

@@ -35,7 +35,10 @@ on another scanner the same-die pairs can all fall below log-odds 0 and still st
 Where only that test fails and the split is clear (Ashman's D at least :data:`OVERRULE_SEPARATION`),
 :attr:`HoardCalibration.vetoed` says so, and ``calibrate_hoard(..., scorer_veto=False)`` gives the
 mixture's calibration all the same; whether to trust it is left to the hoard's own clusters
-(:func:`coindie.clustering.second_pass.cluster_twice`).
+(:func:`coindie.clustering.second_pass.cluster_twice`). Unless pairs the scorer judges same-die stand
+apart above that upper component: then it is a level below the dies (pairs of one design, other dies, in a
+hoard where most dies are known from one coin), the scorer's scale holds on these scans, and its own
+probabilities are kept (:attr:`HoardCalibration.scorer_holds`).
 """
 
 from __future__ import annotations
@@ -59,6 +62,14 @@ MIN_SEPARATION = 2.0
 #: kept (D 3.2-3.9) and those of the independent generator's coarse and two-scanner hoards (4.0-5.5)
 #: held (BENCHMARK.md, "An independent generator").
 OVERRULE_SEPARATION = 3.0
+#: Width, in scales of the mixture's upper component, of the empty band above it past which pairs the
+#: scorer itself judges same-die show the upper component to be a level below the dies (pairs of one design,
+#: other dies: :func:`_dies_above`). On the 32 sides of sixteen hoards of the independent generator
+#: (seeds 15-18; every kind, vetoed or not) the widest band above the upper component's location was 1.0
+#: of its scales; on a hoard of two designs where most dies are known from one coin (seed 19, 36 dies of
+#: 40 coins a side), 10.4 and 13.1, with the 4 and 5 same-die pairs above it (BENCHMARK.md, "A hoard of
+#: two designs and few die links").
+DESIGN_LEVEL_GAP = 4.0
 #: Largest share of same-die pairs a hoard's mixture may claim: most of *all* same-side pairs are of
 #: different dies. Pairs planned by candidate search are each face's nearest faces, mostly of its own die,
 #: and may be up to :data:`MAX_SAME_SHARE_CANDIDATES` same-die.
@@ -94,7 +105,9 @@ class HoardCalibration:
     ``separation`` Ashman's D on the two scales; ``refused`` the pairs whose registration was refused (no
     pose), which the mixture does not see; ``vetoed``: the scores do not separate only because the
     scorer judges the upper component's typical pair different-die, and the mixture is otherwise a clear
-    split (Ashman's D at least :data:`OVERRULE_SEPARATION`).
+    split (Ashman's D at least :data:`OVERRULE_SEPARATION`); ``scorer_holds``: the scores do not separate
+    as a mixture, but pairs the scorer judges same-die stand apart above the mixture's upper component
+    (pairs of one design: :func:`_dies_above`), and its own probabilities are kept with its veto.
     """
 
     n_pairs: int
@@ -106,6 +119,7 @@ class HoardCalibration:
     separates: bool
     message: str
     vetoed: bool = False
+    scorer_holds: bool = False
 
     def probability(self, log_odds: ArrayLike) -> FloatArray:
         """Calibrated probability of each log-odds value: the mixture's posterior when the populations
@@ -191,6 +205,19 @@ def calibrate_hoard(
     judged_different = mean_s < 0.0  # by the scorer itself: its veto
     if judged_different and (scorer_veto or failures):
         failures.append(_VETO)
+    above = _dies_above(z, mean_s, sd_s) if judged_different else None
+    if above is not None:  # the scorer's scale holds on these scans: no overrule either
+        n_top, low, high, band = above
+        message = (
+            f"{len(z)} {what} scored: the scorer judges {n_top} same-die (log-odds {low:.2f} to {high:.2f}), "
+            f"apart above the hoard's upper population ({share:.1%} of the pairs, log-odds {mean_s:.2f} ± "
+            f"{sd_s:.2f} against {mean_d:.2f} ± {sd_d:.2f}) past an empty band {band:.1f} of its scales "
+            f"wide: that population holds pairs of one design and other dies, and the scorer's own "
+            f"probabilities are kept{refused_note}"
+        )
+        return _not_separated(
+            z, refused, separation, message, share, (mean_s, sd_s), (mean_d, sd_d), scorer_holds=True
+        )
     if failures:
         alone = failures == [_VETO] and separation >= OVERRULE_SEPARATION
         unless = ", unless the clusters of the hoard's own mixture stand out (coindie cluster --auto)"
@@ -282,6 +309,28 @@ def _implausible(separation: float, share: float, n: int, max_same_share: float)
     return failures
 
 
+def _dies_above(z: FloatArray, mean_s: float, sd_s: float) -> tuple[int, float, float, float] | None:
+    """Pairs the scorer itself judges same-die standing apart above the mixture's upper component: past
+    the widest empty band above its location, at least :data:`DESIGN_LEVEL_GAP` of its scales wide, every
+    pair scored at log-odds > 0. Their number, lowest and highest log-odds, and the band's width in
+    scales; None where there are none.
+
+    A hoard of two designs whose dies are mostly known from one coin each: its mixture splits the pairs of
+    one design (other dies, half the pairs) from those of two, and their clusters, the designs, stand out
+    as dies would. The scorer scores that upper component far below 0 and the few same-die pairs far above
+    it: it is not the scorer's scale that fails on these scans (on a coarse scanner every same-die pair
+    scores below 0; where some score above, the upper component's tail reaches them without a gap)."""
+    tail = np.sort(z[z > mean_s])
+    if len(tail) < 2:
+        return None
+    gaps = np.diff(tail)
+    widest = int(np.argmax(gaps))
+    top = tail[widest + 1 :]
+    if gaps[widest] < DESIGN_LEVEL_GAP * sd_s or top[0] <= 0.0:
+        return None
+    return len(top), float(top[0]), float(top[-1]), float(gaps[widest] / sd_s)
+
+
 def _fit(z: FloatArray, prior: Mapping[str, tuple[float, float]] | None) -> tuple[FloatArray, ...]:
     """Locations, scales and weights of the (different, same) components: EM from the prior and from the
     data's bulk and upper tail, the fit of the higher likelihood kept.
@@ -360,10 +409,11 @@ def _not_separated(
     different: tuple[float, float] = (float("nan"), float("nan")),
     *,
     vetoed: bool = False,
+    scorer_holds: bool = False,
 ) -> HoardCalibration:
     return HoardCalibration(
         len(z), refused, share, (float(same[0]), float(same[1])), (float(different[0]), float(different[1])),
-        separation, False, message, vetoed,
+        separation, False, message, vetoed, scorer_holds,
     )  # fmt: skip
 
 
