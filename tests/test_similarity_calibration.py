@@ -216,3 +216,20 @@ def test_a_tail_of_the_upper_population_across_log_odds_0_is_no_level_above_it()
     for probabilities in (crossing, below):
         calibration = calibrate_hoard(probabilities)
         assert calibration.vetoed and not calibration.scorer_holds, calibration.message
+
+
+def test_pairs_of_one_design_without_die_links_are_not_left_to_the_hoards_clusters() -> None:
+    """Two designs and no die link: the mixture splits the pairs of one design from those of two,
+    clearly (Ashman's D above 3), and the scorer vetoes it. Its upper component stands 4 log-odds above
+    the other, where other dies' same-die pairs on other scans stood 7.8 or more: the veto is not left to
+    the hoard's clusters to overrule (they would be the designs), and the message says why."""
+    probabilities, same_die = _two_designs(0, seed=5)
+    assert not same_die.any()
+    calibration = calibrate_hoard(probabilities)
+    assert calibration.separation > 3 and not calibration.vetoed and not calibration.scorer_holds
+    gap = calibration.same[0] - calibration.different[0]
+    assert 3.5 < gap < 4.5 and f"stands only {gap:.1f} log-odds above" in calibration.message
+    # the same split 11 log-odds apart: other dies on other scans, left to the clusters
+    far = log_odds(probabilities)
+    far[far > -17.0] += 7.0
+    assert calibrate_hoard(1.0 / (1.0 + np.exp(-far))).vetoed

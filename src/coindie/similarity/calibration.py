@@ -32,7 +32,8 @@ kept and :attr:`HoardCalibration.message` says so in words, with the numbers, fo
 The last test is the scorer's own judgement, and a scorer's sense of scale comes from its training hoards:
 on another scanner the same-die pairs can all fall below log-odds 0 and still stand apart from the rest
 (a coarse, noisy scanner of an independent generator: upper component -5.1 ± 3.3 against -16.2 ± 1.4).
-Where only that test fails and the split is clear (Ashman's D at least :data:`OVERRULE_SEPARATION`),
+Where only that test fails and the split is clear (Ashman's D at least :data:`OVERRULE_SEPARATION`, the
+upper component at least :data:`OVERRULE_MIN_GAP` log-odds above the other),
 :attr:`HoardCalibration.vetoed` says so, and ``calibrate_hoard(..., scorer_veto=False)`` gives the
 mixture's calibration all the same; whether to trust it is left to the hoard's own clusters
 (:func:`coindie.clustering.second_pass.cluster_twice`). Unless pairs the scorer judges same-die stand
@@ -62,6 +63,15 @@ MIN_SEPARATION = 2.0
 #: kept (D 3.2-3.9) and those of the independent generator's coarse and two-scanner hoards (4.0-5.5)
 #: held (BENCHMARK.md, "An independent generator").
 OVERRULE_SEPARATION = 3.0
+#: Log-odds by which the upper component must stand above the other for the hoard's clusters to be asked
+#: to overrule the scorer's veto (a likelihood ratio of e^6, about 400). A scanner unlike the scorer's
+#: training scans lowers every same-die score but leaves them far above the rest: 7.8-17.5 on the vetoed
+#: splits of sixteen hoards of the independent generator (seeds 15-18: coarse 10.1-11.0, two scanners
+#: 16.8-17.5, all-hard 7.8-11.8) and 8.6 on coindie's all-hard hoard of the matrix. Pairs of one design and
+#: other dies stand 2.8-3.7 above those of two designs (seed 19's hoards of two designs with few or no die
+#: links), where the overrule would take the designs for dies (BENCHMARK.md, "A hoard of two designs and
+#: few die links").
+OVERRULE_MIN_GAP = 6.0
 #: Width, in scales of the mixture's upper component, of the empty band above it past which pairs the
 #: scorer itself judges same-die show the upper component to be a level below the dies (pairs of one design,
 #: other dies: :func:`_dies_above`). On the 32 sides of sixteen hoards of the independent generator
@@ -105,7 +115,8 @@ class HoardCalibration:
     ``separation`` Ashman's D on the two scales; ``refused`` the pairs whose registration was refused (no
     pose), which the mixture does not see; ``vetoed``: the scores do not separate only because the
     scorer judges the upper component's typical pair different-die, and the mixture is otherwise a clear
-    split (Ashman's D at least :data:`OVERRULE_SEPARATION`); ``scorer_holds``: the scores do not separate
+    split (Ashman's D at least :data:`OVERRULE_SEPARATION`, the components at least
+    :data:`OVERRULE_MIN_GAP` apart); ``scorer_holds``: the scores do not separate
     as a mixture, but pairs the scorer judges same-die stand apart above the mixture's upper component
     (pairs of one design: :func:`_dies_above`), and its own probabilities are kept with its veto.
     """
@@ -208,8 +219,9 @@ def calibrate_hoard(
     above = _dies_above(z, mean_s, sd_s) if judged_different else None
     if above is not None:  # the scorer's scale holds on these scans: no overrule either
         n_top, low, high, band = above
+        scored = f"{low:.2f}" if n_top == 1 else f"{low:.2f} to {high:.2f}"
         message = (
-            f"{len(z)} {what} scored: the scorer judges {n_top} same-die (log-odds {low:.2f} to {high:.2f}), "
+            f"{len(z)} {what} scored: the scorer judges {n_top} same-die (log-odds {scored}), "
             f"apart above the hoard's upper population ({share:.1%} of the pairs, log-odds {mean_s:.2f} ± "
             f"{sd_s:.2f} against {mean_d:.2f} ± {sd_d:.2f}) past an empty band {band:.1f} of its scales "
             f"wide: that population holds pairs of one design and other dies, and the scorer's own "
@@ -219,13 +231,19 @@ def calibrate_hoard(
             z, refused, separation, message, share, (mean_s, sd_s), (mean_d, sd_d), scorer_holds=True
         )
     if failures:
-        alone = failures == [_VETO] and separation >= OVERRULE_SEPARATION
+        clear = failures == [_VETO] and separation >= OVERRULE_SEPARATION
+        close = mean_s - mean_d < OVERRULE_MIN_GAP
+        alone = clear and not close
         unless = ", unless the clusters of the hoard's own mixture stand out (coindie cluster --auto)"
+        near = (
+            f"; the upper component stands only {mean_s - mean_d:.1f} log-odds above the other, less than "
+            f"the {OVERRULE_MIN_GAP:g} of other dies on other scans (it may hold pairs of one design)"
+        )
         reason = (
             f"the scores of {len(z)} {what} do not separate into same-die and different-die populations "
             f"({'; '.join(failures)}; upper component log-odds {mean_s:.2f} ± {sd_s:.2f} against "
             f"{mean_d:.2f} ± {sd_d:.2f}){refused_note}: the scorer's own probabilities are kept"
-            + (unless if alone else "")
+            + (unless if alone else near if clear else "")
             + "; check the scans' quality and the registrations"
         )
         return _not_separated(
