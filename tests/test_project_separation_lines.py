@@ -128,3 +128,27 @@ def test_two_designs_without_die_links_are_not_taken_for_two_dies(tmp_path: Path
     graph, threshold, _, params = project.auto_graph("D", "consensus")
     sizes = np.bincount(list(cluster(graph, "consensus", threshold, **params).labels.values()))
     assert sizes.max() == 1
+
+
+def test_pairs_apart_above_the_pairs_of_one_design_are_named_for_a_reviewer(tmp_path: Path) -> None:
+    """The two-design hoard on scans that lower every score: its 4 same-die pairs score below 0 but stand
+    apart above the pairs of one design. The run warns, joins no faces, and names those pairs for a look
+    in the review app."""
+    from coindie.clustering import cluster
+
+    die = np.concatenate([np.arange(4), np.arange(36)])
+    design = die % 2
+    i, j = np.triu_indices(len(die), k=1)
+    rng = np.random.default_rng(5)
+    log_odds = np.where(
+        design[i] == design[j], rng.normal(-15.0, 1.2, len(i)), rng.normal(-19.0, 0.6, len(i))
+    )
+    same_die = die[i] == die[j]
+    log_odds[same_die] = rng.normal(-5.0, 0.8, int(same_die.sum()))
+    project = _project(tmp_path, same_die, log_odds, len(die))
+    warning, hint = separation_lines(project)
+    assert warning.startswith("WARNING, side D:") and "4 pairs stand apart above it" in warning
+    assert hint.startswith("  the 4 pairs standing apart") and f"coindie serve {project.folder}" in hint
+    graph, threshold, _, params = project.auto_graph("D", "consensus")
+    sizes = np.bincount(list(cluster(graph, "consensus", threshold, **params).labels.values()))
+    assert sizes.max() == 1

@@ -233,3 +233,22 @@ def test_pairs_of_one_design_without_die_links_are_not_left_to_the_hoards_cluste
     far = log_odds(probabilities)
     far[far > -17.0] += 7.0
     assert calibrate_hoard(1.0 / (1.0 + np.exp(-far))).vetoed
+
+
+def test_same_die_pairs_the_scorer_judges_different_die_above_the_pairs_of_one_design() -> None:
+    """A coarse scanner lowers every score: the few same-die pairs of a two-design hoard score below 0, but
+    stand apart above the pairs of one design (seed 19's coarse hoard: -10.5 to -8.4 against at most -14.9).
+    The upper component is not the dies: no overrule, the scorer's own probabilities, and the pairs above
+    are named for a reviewer (``apart``), not linked."""
+    probabilities, same_die = _two_designs(5, seed=7, same=(-5.0, 0.8))
+    calibration = calibrate_hoard(probabilities)
+    assert not calibration.vetoed and not calibration.scorer_holds and not calibration.separates
+    assert calibration.apart is not None and calibration.apart[0] == 5
+    assert calibration.apart[1] == pytest.approx(log_odds(probabilities)[same_die].min())
+    assert "5 pairs stand apart above it" in calibration.message
+    assert (calibration.probability(log_odds(probabilities)) < 0.5).all()
+    # a split of other dies on other scans has no such level above it
+    assert (
+        calibrate_hoard(_mixture(0.12, 780, seed=43, same=(-9.0, 1.5), different=(-19.5, 1.0))[0]).apart
+        is None
+    )

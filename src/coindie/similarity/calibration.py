@@ -118,7 +118,10 @@ class HoardCalibration:
     split (Ashman's D at least :data:`OVERRULE_SEPARATION`, the components at least
     :data:`OVERRULE_MIN_GAP` apart); ``scorer_holds``: the scores do not separate
     as a mixture, but pairs the scorer judges same-die stand apart above the mixture's upper component
-    (pairs of one design: :func:`_dies_above`), and its own probabilities are kept with its veto.
+    (pairs of one design: :func:`_dies_above`), and its own probabilities are kept with its veto;
+    ``apart``: where such pairs stand apart above the upper component but the scorer judges them
+    different-die all the same, their number, lowest and highest log-odds and the empty band's width in
+    scales (the upper component is not the dies, and those pairs are for a reviewer to look at).
     """
 
     n_pairs: int
@@ -131,6 +134,7 @@ class HoardCalibration:
     message: str
     vetoed: bool = False
     scorer_holds: bool = False
+    apart: tuple[int, float, float, float] | None = None
 
     def probability(self, log_odds: ArrayLike) -> FloatArray:
         """Calibrated probability of each log-odds value: the mixture's posterior when the populations
@@ -217,7 +221,15 @@ def calibrate_hoard(
     if judged_different and (scorer_veto or failures):
         failures.append(_VETO)
     above = _dies_above(z, mean_s, sd_s) if judged_different else None
-    if above is not None:  # the scorer's scale holds on these scans: no overrule either
+    if above is not None and above[1] <= 0.0:
+        # a level of likeness above the upper component, which the scorer judges different-die all the
+        # same: that component is not the dies either (no overrule), and those pairs are for a reviewer
+        n_top, low, high, band = above
+        failures.append(
+            f"{n_top} pair{'s' if n_top > 1 else ''} stand apart above it (log-odds {low:.2f} to {high:.2f}, "
+            f"past an empty band {band:.1f} of its scales wide): it is not the dies"
+        )
+    elif above is not None:  # the scorer's scale holds on these scans: no overrule either
         n_top, low, high, band = above
         scored = f"{low:.2f}" if n_top == 1 else f"{low:.2f} to {high:.2f}"
         message = (
@@ -247,7 +259,7 @@ def calibrate_hoard(
             + "; check the scans' quality and the registrations"
         )
         return _not_separated(
-            z, refused, separation, reason, share, (mean_s, sd_s), (mean_d, sd_d), vetoed=alone
+            z, refused, separation, reason, share, (mean_s, sd_s), (mean_d, sd_d), vetoed=alone, apart=above
         )
     calibration = HoardCalibration(
         len(z), refused, share, (float(mean_s), float(sd_s)), (float(mean_d), float(sd_d)), separation, True,
@@ -328,23 +340,24 @@ def _implausible(separation: float, share: float, n: int, max_same_share: float)
 
 
 def _dies_above(z: FloatArray, mean_s: float, sd_s: float) -> tuple[int, float, float, float] | None:
-    """Pairs the scorer itself judges same-die standing apart above the mixture's upper component: past
-    the widest empty band above its location, at least :data:`DESIGN_LEVEL_GAP` of its scales wide, every
-    pair scored at log-odds > 0. Their number, lowest and highest log-odds, and the band's width in
-    scales; None where there are none.
+    """Pairs standing apart above the mixture's upper component: past the widest empty band above its
+    location, where that band is at least :data:`DESIGN_LEVEL_GAP` of its scales wide. Their number,
+    lowest and highest log-odds, and the band's width in scales; None where there are none.
 
     A hoard of two designs whose dies are mostly known from one coin each: its mixture splits the pairs of
     one design (other dies, half the pairs) from those of two, and their clusters, the designs, stand out
-    as dies would. The scorer scores that upper component far below 0 and the few same-die pairs far above
-    it: it is not the scorer's scale that fails on these scans (on a coarse scanner every same-die pair
-    scores below 0; where some score above, the upper component's tail reaches them without a gap)."""
+    as dies would. The few same-die pairs stand apart above that upper component, the finest level of
+    likeness. Where the scorer judges them same-die (log-odds > 0), its scale holds on these scans; where
+    it does not (a coarse scanner: an independent generator's two-design hoard of seed 19, 4 same-die
+    obverse pairs at -10.5 to -8.4 above pairs of one design up to -14.9), the upper component is still not
+    the dies. Where it is the dies, its tail reaches its highest pairs without such a gap."""
     tail = np.sort(z[z > mean_s])
     if len(tail) < 2:
         return None
     gaps = np.diff(tail)
     widest = int(np.argmax(gaps))
     top = tail[widest + 1 :]
-    if gaps[widest] < DESIGN_LEVEL_GAP * sd_s or top[0] <= 0.0:
+    if gaps[widest] < DESIGN_LEVEL_GAP * sd_s:
         return None
     return len(top), float(top[0]), float(top[-1]), float(gaps[widest] / sd_s)
 
@@ -428,10 +441,11 @@ def _not_separated(
     *,
     vetoed: bool = False,
     scorer_holds: bool = False,
+    apart: tuple[int, float, float, float] | None = None,
 ) -> HoardCalibration:
     return HoardCalibration(
         len(z), refused, share, (float(same[0]), float(same[1])), (float(different[0]), float(different[1])),
-        separation, False, message, vetoed, scorer_holds,
+        separation, False, message, vetoed, scorer_holds, apart,
     )  # fmt: skip
 
 
