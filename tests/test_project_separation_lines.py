@@ -79,6 +79,33 @@ def test_a_vetoed_split_whose_clusters_do_not_stand_out_keeps_the_warning(tmp_pa
     assert line.startswith("WARNING, side D:") and "do not separate" in line
 
 
+def _two_designs(
+    folder: Path, n_linked: int, same: tuple[float, float], seed: int
+) -> tuple[Project, np.ndarray, np.ndarray, np.ndarray]:
+    """A project of 40 coins of two designs whose dies 0 to ``n_linked - 1`` struck two coins each and the
+    others one: the pairs of one design scored at log-odds -15 +- 1.2, those of two at -19 +- 0.6, the
+    same-die pairs around ``same`` (an independent generator's hoards of seed 19). The project, and the
+    pairs' faces (``i``, ``j``) and whether they share a die."""
+    die = np.concatenate([np.arange(n_linked), np.arange(40 - n_linked)])
+    design = die % 2
+    i, j = np.triu_indices(len(die), k=1)
+    rng = np.random.default_rng(seed)
+    log_odds = np.where(
+        design[i] == design[j], rng.normal(-15.0, 1.2, len(i)), rng.normal(-19.0, 0.6, len(i))
+    )
+    same_die = die[i] == die[j]
+    log_odds[same_die] = rng.normal(*same, int(same_die.sum()))
+    return _project(folder, same_die, log_odds, len(die)), i, j, same_die
+
+
+def _auto_clusters(project: Project) -> dict[str, int]:
+    """What ``coindie cluster --auto`` makes of the project's obverses."""
+    from coindie.clustering import cluster
+
+    graph, threshold, _, params = project.auto_graph("D", "consensus")
+    return cluster(graph, "consensus", threshold, **params).labels
+
+
 def test_pairs_of_one_design_are_not_taken_for_dies_where_the_scorer_sees_the_few_die_links(
     tmp_path: Path,
 ) -> None:
@@ -87,24 +114,12 @@ def test_pairs_of_one_design_are_not_taken_for_dies_where_the_scorer_sees_the_fe
     the 4 same-die pairs same-die, far above them: ``cluster --auto`` keeps its probabilities and finds
     the die links, not two dies of 20 coins, and the run's line says why, without a warning (an
     independent generator's hoard of seed 19: FMI 0.109 before, four clusters of 20 faces)."""
-    from coindie.clustering import cluster
-
-    die = np.concatenate([np.arange(4), np.arange(36)])  # dies 0-3 struck two coins each
-    design = die % 2
-    i, j = np.triu_indices(len(die), k=1)
-    rng = np.random.default_rng(3)
-    log_odds = np.where(
-        design[i] == design[j], rng.normal(-15.0, 1.2, len(i)), rng.normal(-19.0, 0.6, len(i))
-    )
-    same_die = die[i] == die[j]
-    log_odds[same_die] = rng.normal(12.0, 4.0, int(same_die.sum()))
-    project = _project(tmp_path, same_die, log_odds, len(die))
+    project, i, j, same_die = _two_designs(tmp_path, 4, (12.0, 4.0), seed=3)
     (line,) = separation_lines(project)
     assert not line.startswith("WARNING") and "the scorer judges 4 same-die" in line, line
     assert project.overrule_silhouette("D") is None
-    graph, threshold, _, params = project.auto_graph("D", "consensus")
-    labels = cluster(graph, "consensus", threshold, **params).labels
-    names = [f"L{k + 1:04d}D" for k in range(len(die))]
+    labels = _auto_clusters(project)
+    names = [f"L{k + 1:04d}D" for k in range(40)]
     found = np.array([labels[names[a]] == labels[names[b]] for a, b in zip(i, j, strict=True)])
     assert found[same_die].all() and not found[~same_die].any()
 
@@ -114,41 +129,20 @@ def test_two_designs_without_die_links_are_not_taken_for_two_dies(tmp_path: Path
     apart from those of two (-19), and their clusters, the designs, stand out, but only 4 log-odds above:
     the scorer's veto stands, the run warns, and ``cluster --auto`` joins no faces (an independent
     generator's hoard of seed 19 with 40 dies: two clusters of 20 faces on its reverses before)."""
-    from coindie.clustering import cluster
-
-    design = np.arange(40) % 2
-    i, j = np.triu_indices(len(design), k=1)
-    rng = np.random.default_rng(4)
-    one_design = design[i] == design[j]
-    log_odds = np.where(one_design, rng.normal(-15.0, 1.2, len(i)), rng.normal(-19.0, 0.6, len(i)))
-    project = _project(tmp_path, np.zeros(len(i), dtype=bool), log_odds, len(design))
+    project, _, _, same_die = _two_designs(tmp_path, 0, (0.0, 1.0), seed=4)
+    assert not same_die.any()
     (line,) = separation_lines(project)
     assert line.startswith("WARNING, side D:") and "pairs of one design" in line, line
     assert project.overrule_silhouette("D") is None
-    graph, threshold, _, params = project.auto_graph("D", "consensus")
-    sizes = np.bincount(list(cluster(graph, "consensus", threshold, **params).labels.values()))
-    assert sizes.max() == 1
+    assert max(np.bincount(list(_auto_clusters(project).values()))) == 1
 
 
 def test_pairs_apart_above_the_pairs_of_one_design_are_named_for_a_reviewer(tmp_path: Path) -> None:
     """The two-design hoard on scans that lower every score: its 4 same-die pairs score below 0 but stand
     apart above the pairs of one design. The run warns, joins no faces, and names those pairs for a look
-    in the review app."""
-    from coindie.clustering import cluster
-
-    die = np.concatenate([np.arange(4), np.arange(36)])
-    design = die % 2
-    i, j = np.triu_indices(len(die), k=1)
-    rng = np.random.default_rng(5)
-    log_odds = np.where(
-        design[i] == design[j], rng.normal(-15.0, 1.2, len(i)), rng.normal(-19.0, 0.6, len(i))
-    )
-    same_die = die[i] == die[j]
-    log_odds[same_die] = rng.normal(-5.0, 0.8, int(same_die.sum()))
-    project = _project(tmp_path, same_die, log_odds, len(die))
+    in the review app (seed 20's coarse two-design hoard: its 4 and 5 same-die pairs, and only they)."""
+    project, _, _, _ = _two_designs(tmp_path, 4, (-5.0, 0.8), seed=5)
     warning, hint = separation_lines(project)
     assert warning.startswith("WARNING, side D:") and "4 pairs stand apart above it" in warning
     assert hint.startswith("  the 4 pairs standing apart") and f"coindie serve {project.folder}" in hint
-    graph, threshold, _, params = project.auto_graph("D", "consensus")
-    sizes = np.bincount(list(cluster(graph, "consensus", threshold, **params).labels.values()))
-    assert sizes.max() == 1
+    assert max(np.bincount(list(_auto_clusters(project).values()))) == 1
