@@ -69,8 +69,8 @@ OVERRULE_SEPARATION = 3.0
 #: splits of sixteen hoards of the independent generator (seeds 15-18: coarse 10.1-11.0, two scanners
 #: 16.8-17.5, all-hard 7.8-11.8) and 8.6 on coindie's all-hard hoard of the matrix. Pairs of one design and
 #: other dies stand 2.8-3.7 above those of two designs (seed 19's hoards of two designs with few or no die
-#: links), where the overrule would take the designs for dies (BENCHMARK.md, "A hoard of two designs and
-#: few die links").
+#: links; 1.9-2.0 on seed 20's coarse one, made after), where the overrule would take the designs for dies
+#: (BENCHMARK.md, "A hoard of two designs and few die links").
 OVERRULE_MIN_GAP = 6.0
 #: Width, in scales of the mixture's upper component, of the empty band above it past which pairs the
 #: scorer itself judges same-die show the upper component to be a level below the dies (pairs of one design,
