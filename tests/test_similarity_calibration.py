@@ -252,3 +252,15 @@ def test_same_die_pairs_the_scorer_judges_different_die_above_the_pairs_of_one_d
         calibrate_hoard(_mixture(0.12, 780, seed=43, same=(-9.0, 1.5), different=(-19.5, 1.0))[0]).apart
         is None
     )
+
+
+def test_one_coin_scanned_twice_does_not_keep_a_clear_split_from_the_hoards_clusters() -> None:
+    """A coarse scanner's clear split of its dies, which the scorer vetoes, and one coin scanned twice: that
+    pair scores at the top of the scale, far above the rest. One pair is no level of likeness: the split
+    is still left to the hoard's clusters. Two such pairs are."""
+    probabilities, _ = _mixture(0.12, 780, seed=44, same=(-9.0, 1.5), different=(-19.5, 1.0))
+    duplicate = 1.0 - 1e-12
+    once = calibrate_hoard(np.append(probabilities, duplicate))
+    assert once.vetoed and once.apart is None and not once.scorer_holds, once.message
+    twice = calibrate_hoard(np.append(probabilities, [duplicate, duplicate]))
+    assert twice.scorer_holds and not twice.vetoed

@@ -80,6 +80,10 @@ OVERRULE_MIN_GAP = 6.0
 #: 40 coins a side), 10.4 and 13.1, with the 4 and 5 same-die pairs above it (BENCHMARK.md, "A hoard of
 #: two designs and few die links").
 DESIGN_LEVEL_GAP = 4.0
+#: Fewest pairs past that band that make a level of likeness: a single pair far above the rest may be one
+#: coin scanned twice (a duplicate scores at the top of the scale on any scanner), which would otherwise keep
+#: a coarse hoard's clear split of its dies from its clusters.
+MIN_PAIRS_APART = 2
 #: Largest share of same-die pairs a hoard's mixture may claim: most of *all* same-side pairs are of
 #: different dies. Pairs planned by candidate search are each face's nearest faces, mostly of its own die,
 #: and may be up to :data:`MAX_SAME_SHARE_CANDIDATES` same-die.
@@ -341,7 +345,8 @@ def _implausible(separation: float, share: float, n: int, max_same_share: float)
 
 def _dies_above(z: FloatArray, mean_s: float, sd_s: float) -> tuple[int, float, float, float] | None:
     """Pairs standing apart above the mixture's upper component: past the widest empty band above its
-    location, where that band is at least :data:`DESIGN_LEVEL_GAP` of its scales wide. Their number,
+    location, where that band is at least :data:`DESIGN_LEVEL_GAP` of its scales wide and they are at least
+    :data:`MIN_PAIRS_APART`. Their number,
     lowest and highest log-odds, and the band's width in scales; None where there are none.
 
     A hoard of two designs whose dies are mostly known from one coin each: its mixture splits the pairs of
@@ -357,7 +362,7 @@ def _dies_above(z: FloatArray, mean_s: float, sd_s: float) -> tuple[int, float, 
     gaps = np.diff(tail)
     widest = int(np.argmax(gaps))
     top = tail[widest + 1 :]
-    if gaps[widest] < DESIGN_LEVEL_GAP * sd_s:
+    if gaps[widest] < DESIGN_LEVEL_GAP * sd_s or len(top) < MIN_PAIRS_APART:
         return None
     return len(top), float(top[0]), float(top[-1]), float(gaps[widest] / sd_s)
 
