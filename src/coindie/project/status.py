@@ -109,11 +109,10 @@ def separation_lines(project: Project) -> list[str]:
         lines.append(f"WARNING, side {side}: {calibration.message}")
         if calibration.apart is not None:
             n_top, low, high, _ = calibration.apart
-            pairs = f"the {n_top} pairs" if n_top > 1 else "the pair"
             lines.append(
-                f"  {pairs} standing apart above the rest (log-odds {low:.2f} to {high:.2f}) may be same-die "
-                f"pairs on scans that lower every score: check them in the review app (coindie serve "
-                f"{project.folder})"
+                f"  the {n_top} pairs standing apart above the rest (log-odds {low:.2f} to {high:.2f}) may "
+                f"be same-die pairs on scans that lower every score: check them in the review app (coindie "
+                f"serve {project.folder})"
             )
         reasons = project.refusal_reasons(params, side)
         lines += [f"  refused {n} time(s): {reason}" for reason, n in reasons]

@@ -230,14 +230,13 @@ def calibrate_hoard(
         # same: that component is not the dies either (no overrule), and those pairs are for a reviewer
         n_top, low, high, band = above
         failures.append(
-            f"{n_top} pair{'s' if n_top > 1 else ''} stand apart above it (log-odds {low:.2f} to {high:.2f}, "
+            f"{n_top} pairs stand apart above it (log-odds {low:.2f} to {high:.2f}, "
             f"past an empty band {band:.1f} of its scales wide): it is not the dies"
         )
     elif above is not None:  # the scorer's scale holds on these scans: no overrule either
         n_top, low, high, band = above
-        scored = f"{low:.2f}" if n_top == 1 else f"{low:.2f} to {high:.2f}"
         message = (
-            f"{len(z)} {what} scored: the scorer judges {n_top} same-die (log-odds {scored}), "
+            f"{len(z)} {what} scored: the scorer judges {n_top} same-die (log-odds {low:.2f} to {high:.2f}), "
             f"apart above the hoard's upper population ({share:.1%} of the pairs, log-odds {mean_s:.2f} ± "
             f"{sd_s:.2f} against {mean_d:.2f} ± {sd_d:.2f}) past an empty band {band:.1f} of its scales "
             f"wide: that population holds pairs of one design and other dies, and the scorer's own "
