@@ -111,8 +111,8 @@ def separation_lines(project: Project) -> list[str]:
             n_top, low, high, _ = calibration.apart
             lines.append(
                 f"  the {n_top} pairs standing apart above the rest (log-odds {low:.2f} to {high:.2f}) may "
-                f"be same-die pairs on scans that lower every score: check them in the review app (coindie "
-                f"serve {project.folder})"
+                "be same-die pairs on scans that lower every score: the review app's queue offers them "
+                f"first (coindie serve {project.folder})"
             )
         reasons = project.refusal_reasons(params, side)
         lines += [f"  refused {n} time(s): {reason}" for reason, n in reasons]

@@ -656,7 +656,7 @@ class Project:
         return choice.threshold, f"chosen by silhouette {choice.score:.3f} (the scores do not separate)"
 
     def auto_graph(
-        self, side: str, method: str = "components"
+        self, side: str, method: str = "components", calibration: HoardCalibration | None = None
     ) -> tuple[ProbabilityGraph, float, str, dict[str, Any]]:
         """``side``'s calibrated graph, its threshold without labels (:meth:`auto_threshold`), how it was
         chosen, and the method's parameters to cluster it with (``cluster(graph, method, threshold,
@@ -666,7 +666,8 @@ class Project:
         across the first clusters and taken off (:mod:`coindie.similarity.face_effects`), the graph
         calibrated again and cut again, its consensus comparing faces by direction alone. Where the scorer
         vetoed the hoard's own calibration (:attr:`coindie.similarity.HoardCalibration.vetoed`), that
-        calibration's clusters are kept if they stand out (:func:`cluster_twice`)."""
+        calibration's clusters are kept if they stand out (:func:`cluster_twice`). ``calibration``:
+        :meth:`calibration` of ``side``, where the caller holds it."""
         from coindie.clustering import PAPER_THRESHOLD
         from coindie.clustering.algorithms import ConsensusLinkage
 
@@ -675,7 +676,7 @@ class Project:
             return graph, PAPER_THRESHOLD, "the paper's (too few faces to choose one)", {}
         if method != ConsensusLinkage.NAME:
             return graph, *self.auto_threshold(side, method, graph), {}
-        calibration = self.calibration(side)
+        calibration = self.calibration(side) if calibration is None else calibration
         result = self._cluster_twice(side, method, graph, calibration)
         note = ""
         if result.second_pass:

@@ -368,7 +368,7 @@ def create_app(source: ReviewSource, token: str, hosts: set[str] | None = None) 
     def queue(threshold: str | None = None, limit: int = 200) -> dict[str, Any]:
         tau = _threshold(threshold, source.threshold)
         corrections = source.corrections()
-        items = review_queue(source.graph, source.links(corrections), corrections, tau, limit)
+        items = review_queue(source.graph, source.links(corrections), corrections, tau, limit, source.apart)
         return {"threshold": tau, "items": [item.to_dict() for item in items]}
 
     @app.get("/api/export/{name}")

@@ -11,7 +11,10 @@ Three kinds of pair, each with an uncertainty in [0, 1]:
   error (every merge of a tree is a bridge: there the merges near the cut are the doubtful ones);
 - ``runner-up``: a singleton's most probable partner not yet decided, the closer its link to t the more
   uncertain, and never under :data:`SINGLETON_FLOOR` (each face left alone is offered; when the expert
-  cuts that pair, the next partner is).
+  cuts that pair, the next partner is);
+- ``apart``: a pair standing apart above the rest of its side that the scorer judges different-die all
+  the same (:attr:`coindie.similarity.HoardCalibration.apart`: on scans that lower every score, the
+  hoard's few same-die pairs may be these), first in the queue, until decided.
 
 Pairs the expert already decided (cut, linked, re-registered) and clusters marked verified are left out.
 Each item carries the pair's probability in the graph under review.
@@ -19,6 +22,7 @@ Each item carries the pair's probability in the graph under review.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import asdict, dataclass
 
 import networkx as nx
@@ -50,12 +54,17 @@ class QueueItem:
 
 
 def review_queue(
-    graph: ProbabilityGraph, links: ReviewLinks, corrections: Corrections, threshold: float, limit: int = 200
+    graph: ProbabilityGraph,
+    links: ReviewLinks,
+    corrections: Corrections,
+    threshold: float,
+    limit: int = 200,
+    apart: Mapping[tuple[str, str], str] | None = None,
 ) -> list[QueueItem]:
     """The pairs to check, most uncertain first (one entry per pair: its most uncertain reason).
 
     ``graph``: the graph under review (the items' probabilities); ``links``: what the slider cuts, the
-    edits applied; ``threshold``: the slider's value.
+    edits applied; ``threshold``: the slider's value; ``apart``: pairs standing apart (each with why).
     """
     probability = {pair(a, b): p for a, b, p in corrected_graph(graph, corrections).edges()}
     clusters = components_at(links, threshold, "")
@@ -71,6 +80,8 @@ def review_queue(
         if key not in items or items[key].uncertainty < u:
             items[key] = QueueItem(a, b, probability.get(key, 0.0), kind, float(u), why)
 
+    for (a, b), why in (apart or {}).items():
+        offer(a, b, "apart", 1.0, why)
     for (a, b), v in zip(links.pairs, links.value, strict=True):
         u = 1.0 - abs(v - threshold) / BAND
         if u > 0:

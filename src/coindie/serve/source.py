@@ -24,9 +24,10 @@ from coindie.errors import CoinDieError
 from coindie.ids import parse_face_id
 from coindie.project import open_project
 from coindie.project.edits import EditLog, sidecar_path
-from coindie.project.store import DB_NAME
+from coindie.project.store import DB_NAME, scored
 from coindie.serve.cuts import START, ReviewLinks, SideCut, auto_links, components_at, threshold_links
 from coindie.serve.layout import cluster_layout
+from coindie.similarity.calibration import HoardCalibration, log_odds
 
 
 class ReviewError(CoinDieError):
@@ -67,6 +68,9 @@ class ReviewSource:
     labels: dict[str, str] = field(default_factory=dict)  # given at init; for evaluation, never shown
     cuts: list[SideCut] = field(default_factory=list)
     unit: str | None = None  # the scans' declared unit (a project's coindie init --unit); None: by size
+    #: pairs standing apart above the rest of their side that the scorer judges different-die all the same
+    #: (:attr:`coindie.similarity.HoardCalibration.apart`), each with why, for the review queue
+    apart: dict[tuple[str, str], str] = field(default_factory=dict)
     _links: tuple[int, ReviewLinks] | None = field(default=None, repr=False)
 
     @property
@@ -225,7 +229,7 @@ def open_source(
 
 def _from_project(folder: Path, threshold: float | None) -> ReviewSource:
     project = open_project(folder)
-    cuts = [] if threshold is not None else _auto_cuts(project)
+    cuts, calibrations = ([], {}) if threshold is not None else _auto_cuts(project)
     if cuts:
         edges = [edge for cut in cuts for edge in cut.graph.edges()]
         graph = ProbabilityGraph.from_edges(edges, [face for cut in cuts for face in cut.graph.nodes])
@@ -253,25 +257,45 @@ def _from_project(folder: Path, threshold: float | None) -> ReviewSource:
     sides = {face: s.side for face, s in scans.items()}
     labels = project.labels()
     unit = project.unit
+    apart = _apart_pairs(project, calibrations)
     project.close()
     return ReviewSource(
         folder.name, folder.resolve(), graph, EditLog.of_project(folder), tau, paths, pairs, sides, labels,
-        cuts, unit,
+        cuts, unit, apart=apart,
     )  # fmt: skip
 
 
-def _auto_cuts(project: Any) -> list[SideCut]:
-    """Each side's cut as ``coindie cluster --auto`` makes it; none before any pair is scored (then the
-    paper's components at its τ)."""
-    scored = project.scored_sides(project.current_params())
-    if not scored:
-        return []
-    cuts = []
+def _apart_pairs(project: Any, calibrations: dict[str, HoardCalibration]) -> dict[tuple[str, str], str]:
+    """The pairs of each side whose calibration found them standing apart above the rest though the scorer
+    judges them different-die (:attr:`coindie.similarity.HoardCalibration.apart`), each with why."""
+    apart: dict[tuple[str, str], str] = {}
+    for side, calibration in calibrations.items():
+        if calibration.apart is None:
+            continue
+        lowest = calibration.apart[1]
+        for row in project.scored_pairs(None, side):
+            z = float(log_odds(float(row["probability"] or 0.0)))
+            if scored(row) and z >= lowest:
+                apart[pair(row["source"], row["target"])] = (
+                    f"stands apart above the rest of side {side} (log-odds {z:.2f}), though the scorer "
+                    "judges it different-die: on scans that lower every score, perhaps one die"
+                )
+    return apart
+
+
+def _auto_cuts(project: Any) -> tuple[list[SideCut], dict[str, HoardCalibration]]:
+    """Each side's cut as ``coindie cluster --auto`` makes it, and the calibration of each side scored;
+    none before any pair is scored (then the paper's components at its τ)."""
+    scored_sides = project.scored_sides(project.current_params())
+    if not scored_sides:
+        return [], {}
+    cuts, calibrations = [], {}
     for side in ("D", "R"):
         why = "no pair scored yet"  # its faces alone, as the paper's components leave them
-        if side in scored:
+        if side in scored_sides:
             try:
-                graph, tau, how, params = project.auto_graph(side, ConsensusLinkage.NAME)
+                calibrations[side] = project.calibration(side)
+                graph, tau, how, params = project.auto_graph(side, ConsensusLinkage.NAME, calibrations[side])
             except CoinDieError as error:
                 why = f"no cut without labels: {error}"
             else:
@@ -281,4 +305,4 @@ def _auto_cuts(project: Any) -> list[SideCut]:
         graph = project.probability_graph(side)  # the side still opens, on the paper's components, saying why
         if graph.n_nodes:
             cuts.append(SideCut(side, graph, "components", PAPER_THRESHOLD, {}, why))
-    return cuts
+    return cuts, calibrations
