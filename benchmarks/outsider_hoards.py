@@ -1,6 +1,6 @@
 """Hoards from a second, independent coin generator, to measure coindie on scans it was not built on.
 
-    .venv/bin/python benchmarks/outsider_hoards.py OUT [--kinds ordinary,hard,coarse,mixed,flat] [--seed 1]
+    .venv/bin/python benchmarks/outsider_hoards.py OUT [--kinds K,...] [--seed 1] [--dies 12] [--meshes]
     .venv/bin/python benchmarks/outsider_hoards.py OUT --evaluate      # init, run, cluster --auto, eval
 
 Every figure of issue 13's matrix comes from `coindie.synth`: the shipped models were trained on hoards of
@@ -21,7 +21,11 @@ imports nothing of coindie (the PLYs and ``labels.csv`` are written here) and ma
 Hoards of 40 coins (80 faces), 12 dies a side, as the issue's held-out hoards. The kinds follow the issue's
 table: ``ordinary``, ``hard`` (worn, bent, broken, crusted; one type a side, dies 0.25 mm apart),
 ``coarse`` (0.15 mm spacing, 0.03 mm noise), ``mixed`` (two scanners in one hoard), ``flat`` (flat,
-uniform, centred flans). Beside the PLYs and ``labels.csv``: ``poses.json`` (each face's T_scan_die: for two
+uniform, centred flans), and ``fine`` (the finest scanner of the issue's range, 0.02 mm spacing and 0.003 mm
+noise, smoothed); ``sametype``, ``offcentre``, ``bent``, ``weak`` and ``worn`` take the hard kind apart (the
+ordinary kind with one group of the hard kind's settings: one type a side with dies 0.25 mm apart; strikes
+off centre and broken flans; cupping and bends; weak zones and double strikes; wear and corrosion).
+Beside the PLYs and ``labels.csv``: ``poses.json`` (each face's T_scan_die: for two
 faces of one die, T_b_a = T_scan_die[b] @ inv(T_scan_die[a])) and ``faces.json`` (what each face was
 drawn with: flan, share of the die on it, off-centre share, double strike, weak zone, wear, corrosion,
 cupping, bend, scanner). ``truth.json`` and ``splits.csv`` hold the same poses in the form
@@ -103,8 +107,23 @@ KINDS = {
         scanners=(GOOD, Scanner(spacing=0.1, noise=0.02, smoothed=True, estimated_normals=True, holes=3)),
     ),
     "flat": replace(ORDINARY, off_centre=0.0, flan_spread=0.0, outline_wobble=0.0, cupping=0.0),
+    # the issue's finest scanner (0.02 mm, 0.003 mm noise, a smoothed mesh): about a million points a face
+    "fine": replace(
+        ORDINARY,
+        scanners=(Scanner(spacing=0.02, noise=0.003, smoothed=True, estimated_normals=False, holes=2),),
+    ),
+    # the hard kind taken apart: the ordinary kind with one of its groups of axes at the hard kind's extremes
+    "sametype": replace(ORDINARY, types=1, die_jitter=HARD.die_jitter),
+    "offcentre": replace(
+        ORDINARY, off_centre=HARD.off_centre, broken=HARD.broken, flan_spread=HARD.flan_spread
+    ),
+    "bent": replace(ORDINARY, cupping=HARD.cupping, bend=HARD.bend, outline_wobble=HARD.outline_wobble),
+    "weak": replace(ORDINARY, weak=HARD.weak, double=HARD.double),
+    "worn": replace(ORDINARY, wear=HARD.wear, corrosion=HARD.corrosion),
 }
 
+#: The kinds of issue 13's held-out hoards (the default).
+ISSUE_KINDS = ("ordinary", "hard", "coarse", "mixed", "flat")
 
 # ------------------------------------------------------------------------------------------------ drawing
 
@@ -347,9 +366,11 @@ def strike(
 
 
 def scan(
-    height: Array, flan: Array, scanner: Scanner, rng: np.random.Generator
-) -> tuple[Array, Array, Array]:
-    """Points and normals of one face and its edge wall, in a random pose, and T_scan_coin."""
+    height: Array, flan: Array, scanner: Scanner, rng: np.random.Generator, *, mesh: bool = False
+) -> tuple[Array, Array, Array, NDArray[np.int64] | None]:
+    """Points and normals of one face and its edge wall, in a random pose, T_scan_coin, and no triangles;
+    with ``mesh``, the face's sampling grid as a triangle mesh instead (two triangles a grid cell whose four
+    corners were kept, facing up; no edge wall): its vertices, their grid normals and the triangles."""
     if scanner.smoothed:
         height = ndimage.gaussian_filter(height, 0.7 * scanner.spacing / RENDER_MM)
     n = height.shape[0]
@@ -371,6 +392,34 @@ def scan(
         keep &= ((px - cx) / a) ** 2 + ((py - cy) / b) ** 2 > 1
     points = np.stack([px[keep], py[keep], z[keep]], axis=1)
     normals = np.stack([-zx[keep], -zy[keep], np.ones(keep.sum())], axis=1)
+    triangles = _grid_triangles(keep) if mesh else None
+    if not mesh:
+        points, normals = _with_wall(points, normals, height, flan, scanner, rng)
+    normals /= np.linalg.norm(normals, axis=1, keepdims=True)
+    pose = Rotation.random(random_state=rng)
+    T_scan_coin = np.eye(4)
+    T_scan_coin[:3, :3] = pose.as_matrix()
+    T_scan_coin[:3, 3] = rng.uniform(-40, 40, 3)
+    return pose.apply(points) + T_scan_coin[:3, 3], pose.apply(normals), T_scan_coin, triangles
+
+
+def _grid_triangles(keep: NDArray[np.bool_]) -> NDArray[np.int64]:
+    """Two triangles (facing up) for each cell of the sampling grid whose four corners were kept, as
+    indices into the kept samples in row-major order."""
+    index = np.full(keep.shape, -1, dtype=np.int64)
+    index[keep] = np.arange(int(keep.sum()))
+    a, b, c, d = index[:-1, :-1], index[:-1, 1:], index[1:, :-1], index[1:, 1:]
+    whole = (a >= 0) & (b >= 0) & (c >= 0) & (d >= 0)
+    a, b, c, d = a[whole], b[whole], c[whole], d[whole]
+    return np.concatenate([np.stack([a, b, d], axis=1), np.stack([a, d, c], axis=1)])
+
+
+def _with_wall(
+    points: Array, normals: Array, height: Array, flan: Array, scanner: Scanner, rng: np.random.Generator
+) -> tuple[Array, Array]:
+    """The face's samples with its edge wall added, and their normals (estimated, for such a scanner)."""
+    step = scanner.spacing
+    half = (height.shape[0] - 1) / 2.0
     # the edge wall: 1.2 mm down from the outline, normals outwards
     edge = ndimage.binary_erosion(flan) ^ flan
     er, ec = np.nonzero(edge)
@@ -394,12 +443,20 @@ def scan(
         flip = np.einsum("ij,ij->i", estimated, normals) < 0
         estimated[flip] *= -1
         normals = estimated
-    normals /= np.linalg.norm(normals, axis=1, keepdims=True)
-    pose = Rotation.random(random_state=rng)
-    T_scan_coin = np.eye(4)
-    T_scan_coin[:3, :3] = pose.as_matrix()
-    T_scan_coin[:3, 3] = rng.uniform(-40, 40, 3)
-    return pose.apply(points) + T_scan_coin[:3, 3], pose.apply(normals), T_scan_coin
+    return points, normals
+
+
+def write_stl(path: Path, points: Array, triangles: NDArray[np.int64]) -> None:
+    """A binary STL of the triangles (facet normals from their corners; written here, not by coindie)."""
+    corners = points[triangles]
+    facet = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
+    facet /= np.maximum(np.linalg.norm(facet, axis=1, keepdims=True), 1e-12)
+    data = np.zeros(len(triangles), dtype=[("normal", "<f4", 3), ("corners", "<f4", (3, 3)), ("attr", "<u2")])
+    data["normal"], data["corners"] = facet, corners
+    with path.open("wb") as out:
+        out.write(b"outsider_hoards.py".ljust(80, b" "))
+        out.write(np.uint32(len(triangles)).tobytes())
+        out.write(data.tobytes())
 
 
 def write_ply(path: Path, points: Array, normals: Array) -> None:
@@ -420,7 +477,9 @@ def write_ply(path: Path, points: Array, normals: Array) -> None:
         out.write(data.tobytes())
 
 
-def make_hoard(folder: Path, name: str, seed: int, coins: int = 40, dies: int = 12) -> None:
+def make_hoard(
+    folder: Path, name: str, seed: int, coins: int = 40, dies: int = 12, meshes: bool = False
+) -> None:
     kind = KINDS[name]
     dies = min(dies, coins)
     rng = np.random.default_rng(seed)
@@ -440,9 +499,12 @@ def make_hoard(folder: Path, name: str, seed: int, coins: int = 40, dies: int = 
             height, flan, T_coin_die = strike(die_reliefs[die], die_types[die].radius, kind, rng, faces[face])
             scanner = kind.scanners[int(rng.integers(len(kind.scanners)))]
             faces[face]["scanner"] = kind.scanners.index(scanner)
-            points, normals, T_scan_coin = scan(height, flan, scanner, rng)
+            points, normals, T_scan_coin, triangles = scan(height, flan, scanner, rng, mesh=meshes)
             poses[face] = (T_scan_coin @ T_coin_die).tolist()
-            write_ply(folder / f"{face}.ply", points, normals)
+            if triangles is None:
+                write_ply(folder / f"{face}.ply", points, normals)
+            else:
+                write_stl(folder / f"{face}.stl", points, triangles)
             labels.append((face, f"{side}{die + 1}"))
             print(f"{name} {face}: die {side}{die + 1}, {len(points):,} points", flush=True)
     with (folder / "labels.csv").open("w", newline="") as out:
@@ -489,11 +551,20 @@ def evaluate(folder: Path, coindie: str) -> dict[str, object]:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("out", type=Path)
-    parser.add_argument("--kinds", default=",".join(KINDS))
+    parser.add_argument(
+        "--kinds",
+        default=",".join(ISSUE_KINDS),
+        help=f"comma-separated, among {', '.join(KINDS)} (default: issue 13's five)",
+    )
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--coins", type=int, default=40)
     parser.add_argument(
         "--dies", type=int, default=12, help="dies a side (as many as coins: every die known from one coin)"
+    )
+    parser.add_argument(
+        "--meshes",
+        action="store_true",
+        help="write each face as a binary STL mesh of its sampling grid (no normals, no edge wall)",
     )
     parser.add_argument("--evaluate", action="store_true")
     parser.add_argument("--coindie", default=str(Path(sys.executable).with_name("coindie")))
@@ -507,10 +578,14 @@ def main() -> None:
     if args.dies < 1:
         parser.error(f"--dies must be at least 1. Got {args.dies}.")
     for name in kinds:
-        folder = args.out / (f"{name}-{args.seed}" + ("" if args.dies == 12 else f"-{args.dies}dies"))
+        folder = args.out / (
+            f"{name}-{args.seed}"
+            + ("" if args.dies == 12 else f"-{args.dies}dies")
+            + ("-stl" if args.meshes else "")
+        )
         if not (folder / "labels.csv").exists():
             seed = args.seed * 100 + list(KINDS).index(name)
-            make_hoard(folder, name, seed, coins=args.coins, dies=args.dies)
+            make_hoard(folder, name, seed, coins=args.coins, dies=args.dies, meshes=args.meshes)
         elif not (folder / "truth.json").exists():  # a hoard made before the script wrote it
             write_truth(folder, json.loads((folder / "poses.json").read_text()))
         if args.evaluate:
