@@ -52,3 +52,15 @@ def two_designs(
     same_die = die[i] == die[j]
     log_odds[same_die] = rng.normal(*same, int(same_die.sum()))
     return scored_project(folder, same_die, log_odds, len(die)), i, j, same_die
+
+
+def unevenly_worn_scores(seed: int, pull: float = 2.5) -> tuple[np.ndarray, np.ndarray]:
+    """The dies of 31 faces (9, 7, 6, 4, 3 and 2 coins) and their pairs' log-odds (``np.triu_indices``
+    order) on scans unlike the scorer's (every pair below log-odds 0), worn unevenly: each face's pull, drawn
+    with a spread of ``pull``, larger than the same-die gap of 6."""
+    rng = np.random.default_rng(seed)
+    die = np.repeat(np.arange(6), [9, 7, 6, 4, 3, 2])
+    pulls = rng.normal(0.0, pull, len(die))
+    i, j = np.triu_indices(len(die), k=1)
+    same = die[i] == die[j]
+    return die, -16.0 + pulls[i] + pulls[j] + 6.0 * same + rng.normal(0.0, 0.7, len(i))

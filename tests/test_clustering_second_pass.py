@@ -9,6 +9,7 @@ import pytest
 from coindie.clustering import ProbabilityGraph, cluster, evaluate, second_pass, select_threshold_unsupervised
 from coindie.clustering.second_pass import cluster_twice
 from coindie.similarity.face_effects import without_face_effects_across
+from scored_projects import unevenly_worn_scores
 
 
 def _graphs(die: np.ndarray, log_odds: np.ndarray, side: str = "D"):  # noqa: ANN202 (a closure)
@@ -176,24 +177,13 @@ def test_a_vetoed_mixture_whose_clusters_do_not_stand_out_is_not_used() -> None:
     assert result.clusters.labels == alone.clusters.labels
 
 
-def _worn_vetoed_hoard(seed: int) -> tuple[np.ndarray, np.ndarray]:
-    """Scans unlike the scorer's (every pair below log-odds 0) and worn unevenly: each face's pull larger
-    than the same-die gap."""
-    rng = np.random.default_rng(seed)
-    die = np.repeat(np.arange(6), [9, 7, 6, 4, 3, 2])
-    pull = rng.normal(0.0, 2.5, len(die))
-    i, j = np.triu_indices(len(die), k=1)
-    same = die[i] == die[j]
-    return die, -16.0 + pull[i] + pull[j] + 6.0 * same + rng.normal(0.0, 0.7, len(i))
-
-
 @pytest.mark.parametrize("seed", range(3))
 def test_a_vetoed_mixture_is_tried_again_once_each_faces_pull_is_off(seed: int) -> None:
     """The mixture of the raw scores is murky (the pulls blur the dies), but once each face's pull is
     taken off its clusters stand out: the second pass keeps them, and finds the dies the veto hid."""
     from coindie.similarity.calibration import calibrate_hoard
 
-    die, log_odds = _worn_vetoed_hoard(seed)
+    die, log_odds = unevenly_worn_scores(seed)
     truth, calibrated_graph = _graphs(die, log_odds)
     names = list(truth)
     i, j = np.triu_indices(len(die), k=1)

@@ -13,6 +13,7 @@ from coindie.project import Project
 from coindie.project.status import separation_lines
 from scored_projects import scored_project as _project
 from scored_projects import two_designs as _two_designs
+from scored_projects import unevenly_worn_scores
 
 
 def _scores(upper: np.ndarray, seed: int) -> np.ndarray:
@@ -104,3 +105,51 @@ def test_pairs_apart_above_the_pairs_of_one_design_are_named_for_a_reviewer(tmp_
     assert warning.startswith("WARNING, side D:") and "4 pairs stand apart above it" in warning
     assert hint.startswith("  the 4 pairs standing apart") and f"coindie serve {project.folder}" in hint
     assert max(np.bincount(list(_auto_clusters(project).values()))) == 1
+
+
+def _worn_project(folder: Path, seed: int, pull: float) -> tuple[Project, dict[str, int]]:
+    """A project of :func:`unevenly_worn_scores`'s hoard, and its faces' dies."""
+    die, log_odds = unevenly_worn_scores(seed, pull)
+    i, j = np.triu_indices(len(die), k=1)
+    project = _project(folder, die[i] == die[j], log_odds, len(die))
+    return project, {f"L{k + 1:04d}D": int(d) for k, d in enumerate(die)}
+
+
+@pytest.mark.parametrize("seed", [1, 3, 5])
+def test_the_run_tells_the_split_cluster_auto_keeps_once_the_pulls_are_off(tmp_path: Path, seed: int) -> None:
+    """Unevenly worn faces blur the side's own split (no clear split: the scorer's veto is not what refused
+    it), but once each face's pull is taken off, the split is clear, vetoed, and its clusters stand out:
+    ``cluster --auto`` keeps them. The run warns of the murky scores and, on a second line, tells that split
+    with its numbers, instead of stopping at "the scorer's own probabilities are kept" (the independent
+    generator's hard hoards of seeds 22 and 23: Ashman's D 1.67 and 1.77, FMI 0.98 and 0.97)."""
+    project, dies = _worn_project(tmp_path, seed, pull=2.5)
+    calibration = project.calibration("D")
+    assert not calibration.separates and not calibration.vetoed
+    found = project.overrule("D")
+    assert found is not None and found.after_pulls and found.calibration.vetoed
+    warning, told = separation_lines(project)
+    assert warning.startswith("WARNING, side D:") and "do not separate" in warning
+    assert told.startswith("  once each face's pull is taken off, ") and "stand out" in told, told
+    assert f"Ashman's D {found.calibration.separation:.2f}" in told
+    assert f"{found.calibration.same_share:.1%} in an upper population" in told
+    assert f"silhouette {found.silhouette:.2f}" in told and f"coindie serve {project.folder}" in told
+    # what the line tells is what cluster --auto does, and those clusters are the dies
+    _, _, how, _ = project.auto_graph("D", "consensus")
+    assert "each face's pull taken off" in how and "which the scorer had judged different-die" in how
+    from coindie.clustering import evaluate
+
+    assert evaluate(_auto_clusters(project), dies).fmi > 0.9
+
+
+def test_a_clear_vetoed_split_kept_once_the_pulls_are_off_says_so(tmp_path: Path) -> None:
+    """The side's own split is clear and vetoed, and its clusters stand out only once each face's pull is
+    off: one line, no warning, saying so."""
+    project, _ = _worn_project(tmp_path, 0, pull=2.5)
+    assert project.calibration("D").vetoed
+    found = project.overrule("D")
+    assert found is not None and found.after_pulls
+    (line,) = separation_lines(project)
+    assert (
+        line.startswith("scores of side D:")
+        and "its clusters, once each face's pull is taken off, stand" in line
+    )

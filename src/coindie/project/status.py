@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import asdict, dataclass, field
 from typing import Any
 
-from coindie.project.store import Project, elapsed_since, side_pairs
+from coindie.project.store import Overrule, Project, elapsed_since, side_pairs
 from coindie.similarity.calibration import HoardCalibration
 
 
@@ -90,11 +90,15 @@ def separation_lines(project: Project) -> list[str]:
 
     A split that only the scorer's own scale refused (its typical upper pair below log-odds 0: scans
     unlike its training scans), whose clusters stand out so that ``coindie cluster --auto`` keeps them
-    (:meth:`coindie.project.Project.overrule_silhouette`), is told as such, with its numbers, not as a
+    (:meth:`coindie.project.Project.overrule`), is told as such, with its numbers, not as a
     warning: the scores do separate. On the independent generator's coarse and two-scanner hoards of
     seed 17, the warning stood over die studies of FMI 1.000. Nor is a side whose pairs the scorer judges
     same-die stand apart above the hoard's upper population (:attr:`coindie.similarity.HoardCalibration.
-    scorer_holds`): the scorer's own probabilities separate them."""
+    scorer_holds`): the scorer's own probabilities separate them. Where the side's own split is not clear
+    but ``cluster --auto`` keeps the vetoed split found once each face's pull is taken off
+    (:meth:`coindie.project.Project.overrule`), the warning stands and a second line tells that split
+    and its clusters: the run no longer warns of murky scores and stops there while ``cluster --auto``
+    goes on to the dies (the independent generator's hard hoards of seeds 22 and 23)."""
     params = project.current_params()
     lines = []
     for side in project.scored_sides(params):
@@ -102,11 +106,15 @@ def separation_lines(project: Project) -> list[str]:
         if calibration.separates or calibration.scorer_holds:
             lines.append(f"scores of side {side}: {calibration.message}")
             continue
-        silhouette = project.overrule_silhouette(side, calibration=calibration)
-        if silhouette is not None:
-            lines.append(f"scores of side {side}: {_overruled(calibration, side, silhouette, project)}")
+        found = project.overrule(side, calibration=calibration)
+        if found is not None and calibration.vetoed:
+            told = _overruled(calibration, side, found, project, after_pulls=found.after_pulls)
+            lines.append(f"scores of side {side}: {told}")
             continue
         lines.append(f"WARNING, side {side}: {calibration.message}")
+        if found is not None:  # the side's own split is not clear; the one once the pulls are off is
+            told = _overruled(found.calibration, side, found, project, after_pulls=False)
+            lines.append(f"  once each face's pull is taken off, {told}")
         if calibration.apart is not None:
             n_top, low, high, _ = calibration.apart
             lines.append(
@@ -119,13 +127,17 @@ def separation_lines(project: Project) -> list[str]:
     return lines
 
 
-def _overruled(calibration: HoardCalibration, side: str, silhouette: float, project: Project) -> str:
-    """A vetoed split whose clusters stand out, in words and numbers, and where to look at it."""
+def _overruled(
+    calibration: HoardCalibration, side: str, found: Overrule, project: Project, *, after_pulls: bool
+) -> str:
+    """A vetoed split (``calibration``'s) whose clusters stand out (``found``), in words and numbers, and
+    where to look at it; ``after_pulls``: say that they stand out once each face's pull is off."""
+    once = ", once each face's pull is taken off," if after_pulls else ""
     return (
         calibration.split(side_pairs(side), "an upper population")
-        + " that the scorer, trained on other scans, judges different-die; its clusters stand out "
-        f"(silhouette {silhouette:.2f}), so coindie cluster --auto takes them for the dies: check a few of "
-        f"their pairs in the review app (coindie serve {project.folder})"
+        + f" that the scorer, trained on other scans, judges different-die; its clusters{once} stand out "
+        f"(silhouette {found.silhouette:.2f}), so coindie cluster --auto takes them for the dies: check a "
+        f"few of their pairs in the review app (coindie serve {project.folder})"
     )
 
 
