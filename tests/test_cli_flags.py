@@ -35,3 +35,14 @@ def test_run_names_its_flag_for_a_bad_parameter(tmp_path: Path) -> None:
     assert "'workers' parameter (--workers) of RunConfig must be an int in the range [0, inf)" in (
         result.output
     )
+
+
+def test_run_refuses_a_bad_method_parameter_before_opening_the_project(tmp_path: Path) -> None:
+    for param, message in (
+        ("relief.angle_step", "--param must be written key=value"),
+        ("relief.no_such=1", "has no parameter"),
+        ("relief.angle_step=0", "angle_step"),
+    ):
+        result = CliRunner().invoke(app, ["run", str(tmp_path / "nowhere"), "--param", param])
+        assert result.exit_code == 2 and message in result.output, (param, result.output)
+        assert "nowhere" not in result.output  # the parameter, not the missing project, is told

@@ -221,3 +221,34 @@ def test_a_worker_does_not_take_one_projects_face_for_anothers(tmp_path: Path) -
     first, second = (worker.face("L0001D", p) for p in paths)
     assert first.points[0, 0] == 0.0 and second.points[0, 0] == 1.0
     assert worker.face("L0001D", paths[0]) is first  # still cached: loaded once per file
+
+
+def test_the_run_command_registers_with_the_method_parameters_it_is_given(hoard, tmp_path: Path) -> None:
+    """``coindie run --param``: the run's method takes the parameters (stored with the run), and its pairs
+    are a parameter set of their own, beside the defaults' (a project can compare both)."""
+    import json
+
+    from typer.testing import CliRunner
+
+    from coindie.cli.app import app
+
+    init_project(tmp_path / "p", hoard)
+    common = ["run", str(tmp_path / "p"), "--workers", "1", "--exhaustive", "--relay-neighbours", "0"]
+    given = CliRunner().invoke(app, [*common, "-p", "relief.angle_search=spectrum", "-p", "blocks.levels=0"])
+    assert given.exit_code == 0, given.output
+    project = open_project(tmp_path / "p")
+    run = project.latest_run()
+    assert run is not None
+    assert json.loads(run["config"])["method_params"] == {
+        "relief.angle_search": "spectrum",
+        "blocks.levels": 0,
+    }
+    assert CliRunner().invoke(app, common).exit_code == 0
+    project = open_project(tmp_path / "p")
+    defaults = project.latest_run()
+    assert defaults is not None and defaults["params_hash"] != run["params_hash"]
+    given_pairs, default_pairs = (project.scored_pairs(r["params_hash"]) for r in (run, defaults))
+    assert len(given_pairs) == 30
+    assert [(p["source"], p["target"]) for p in given_pairs] == [
+        (p["source"], p["target"]) for p in default_pairs
+    ]

@@ -32,6 +32,37 @@ Unit = Annotated[
     ),
 ]
 
+#: A registration method's parameters, each as key=value (coindie.registration.MethodInfo.parse checks them).
+MethodParams = Annotated[
+    list[str] | None,
+    typer.Option(
+        "--param",
+        "-p",
+        help="A parameter of the registration method as key=value (repeatable; see coindie methods), e.g. "
+        "relief.angle_step=4.",
+    ),
+]
+
+
+def method_params(method: str, items: list[str] | None) -> dict[str, object]:
+    """``--param key=value`` items as the method's full parameter names and parsed values; a
+    ``ParameterError`` names an item not written key=value, an unknown key or a bad value."""
+    from coindie.errors import ParameterError
+    from coindie.registration import method_info
+
+    info = method_info(method)
+    params = {}
+    for item in items or []:
+        key, sep, text = item.partition("=")
+        if not sep or not key.strip():
+            raise ParameterError(
+                f"--param must be written key=value (e.g. relief.angle_step=4). Got {item!r}."
+            )
+        full_key, value = info.parse(key.strip(), text.strip())
+        params[full_key] = value
+    return params
+
+
 #: Library parameters set by a flag of another name: parameter -> the option's Python name in the command.
 FLAG_OF_PARAMETER = {"k": "candidates"}
 

@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from coindie.cli.common import Dask, Unit, exits_cleanly
+from coindie.cli.common import Dask, MethodParams, Unit, exits_cleanly, method_params
 from coindie.project.relay import DEFAULT_NEIGHBOURS, DEFAULT_ROUNDS
 
 #: The commands of this module; coindie.cli.app registers them.
@@ -47,6 +47,7 @@ def init(
 def run(
     project: Annotated[Path, typer.Argument(help="Project folder made by coindie init.")],
     method: Annotated[str, typer.Option(help="Registration method (see coindie methods).")] = "relief",
+    param: MethodParams = None,
     workers: Annotated[int, typer.Option(help="Worker processes (0: one per core).")] = 0,
     dask: Dask = None,
     exhaustive: Annotated[bool, typer.Option("--exhaustive", help="Score every pair of each side.")] = False,
@@ -92,6 +93,7 @@ def run(
     mode = "exhaustive" if exhaustive else "candidates" if candidates is not None else "auto"
     config = RunConfig(
         method=method,
+        method_params=method_params(method, param),
         mode=mode,
         k=candidates or DEFAULT_K,
         workers=workers,

@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
-from coindie.cli.common import Unit, exits_cleanly
+from coindie.cli.common import MethodParams, Unit, exits_cleanly, method_params
 from coindie.errors import ParameterError
 
 if TYPE_CHECKING:
@@ -31,12 +31,7 @@ def register(
     method: Annotated[
         str, typer.Option("--method", "-m", help="Method name (see `coindie methods`).")
     ] = "relief",
-    param: Annotated[
-        list[str] | None,
-        typer.Option(
-            "--param", "-p", help="A method parameter as key=value (repeatable), e.g. noise_bound=0.3."
-        ),
-    ] = None,
+    param: MethodParams = None,
     grid: Annotated[
         float, typer.Option(help="Grid-sampling cell (mm) applied to both scans; 0: none.")
     ] = 0.1,
@@ -49,9 +44,7 @@ def register(
     """
     from coindie.registration import method_info
 
-    info = method_info(method)
-    params = dict(_parsed(info, item) for item in param or [])
-    registrar = info.build(params)  # parameters are checked before any file is read
+    registrar = method_info(method).build(method_params(method, param))  # checked before any file is read
     source_scan, target_scan = _prepared(source, grid, unit), _prepared(target, grid, unit)
     result = registrar.register(source_scan, target_scan)
     if as_json:
@@ -60,13 +53,6 @@ def register(
         typer.echo(_text(result, source_scan, target_scan))
     if not result.valid:
         raise typer.Exit(code=EXIT_INVALID)
-
-
-def _parsed(info: MethodInfo, item: str) -> tuple[str, Any]:
-    key, sep, text = item.partition("=")
-    if not sep or not key.strip():
-        raise ParameterError(f"--param must be written key=value (e.g. noise_bound=0.3). Got {item!r}.")
-    return info.parse(key.strip(), text.strip())
 
 
 def _prepared(path: Path, grid: float, unit: str | None) -> Scan:
