@@ -37,8 +37,8 @@ def test_a_vetoed_split_whose_clusters_stand_out_is_told_without_a_warning(tmp_p
     # the numbers told are the calibration's and the clustering's own
     assert f"Ashman's D {calibration.separation:.2f}" in line
     assert f"{calibration.same_share:.1%} in an upper population" in line
-    silhouette = project.overrule_silhouette("D")
-    assert silhouette is not None and f"silhouette {silhouette:.2f}" in line
+    found = project.overrule("D")
+    assert found is not None and f"silhouette {found.silhouette:.2f}" in line
 
 
 @pytest.mark.parametrize("seed", range(2))
@@ -52,7 +52,7 @@ def test_a_vetoed_split_whose_clusters_do_not_stand_out_keeps_the_warning(tmp_pa
     upper = np.random.default_rng(seed).random(len(i)) < 0.3
     project = _project(tmp_path, upper, _scores(upper, seed), n_faces)
     assert project.calibration("D").vetoed
-    assert project.overrule_silhouette("D") is None
+    assert project.overrule("D") is None
     (line,) = separation_lines(project)
     assert line.startswith("WARNING, side D:") and "do not separate" in line
 
@@ -76,7 +76,7 @@ def test_pairs_of_one_design_are_not_taken_for_dies_where_the_scorer_sees_the_fe
     project, i, j, same_die = _two_designs(tmp_path, 4, (12.0, 4.0), seed=3)
     (line,) = separation_lines(project)
     assert not line.startswith("WARNING") and "the scorer judges 4 same-die" in line, line
-    assert project.overrule_silhouette("D") is None
+    assert project.overrule("D") is None
     labels = _auto_clusters(project)
     names = [f"L{k + 1:04d}D" for k in range(40)]
     found = np.array([labels[names[a]] == labels[names[b]] for a, b in zip(i, j, strict=True)])
@@ -92,7 +92,7 @@ def test_two_designs_without_die_links_are_not_taken_for_two_dies(tmp_path: Path
     assert not same_die.any()
     (line,) = separation_lines(project)
     assert line.startswith("WARNING, side D:") and "pairs of one design" in line, line
-    assert project.overrule_silhouette("D") is None
+    assert project.overrule("D") is None
     assert max(np.bincount(list(_auto_clusters(project).values()))) == 1
 
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import asdict, dataclass, field
 from typing import Any
 
-from coindie.project.store import Overrule, Project, elapsed_since, side_pairs
+from coindie.project.store import Project, elapsed_since, side_pairs
 from coindie.similarity.calibration import HoardCalibration
 
 
@@ -108,12 +108,12 @@ def separation_lines(project: Project) -> list[str]:
             continue
         found = project.overrule(side, calibration=calibration)
         if found is not None and calibration.vetoed:
-            told = _overruled(calibration, side, found, project, after_pulls=found.after_pulls)
+            told = _overruled(calibration, side, found.silhouette, project, after_pulls=found.after_pulls)
             lines.append(f"scores of side {side}: {told}")
             continue
         lines.append(f"WARNING, side {side}: {calibration.message}")
         if found is not None:  # the side's own split is not clear; the one once the pulls are off is
-            told = _overruled(found.calibration, side, found, project, after_pulls=False)
+            told = _overruled(found.calibration, side, found.silhouette, project, after_pulls=False)
             lines.append(f"  once each face's pull is taken off, {told}")
         if calibration.apart is not None:
             n_top, low, high, _ = calibration.apart
@@ -128,15 +128,16 @@ def separation_lines(project: Project) -> list[str]:
 
 
 def _overruled(
-    calibration: HoardCalibration, side: str, found: Overrule, project: Project, *, after_pulls: bool
+    calibration: HoardCalibration, side: str, silhouette: float, project: Project, *, after_pulls: bool
 ) -> str:
-    """A vetoed split (``calibration``'s) whose clusters stand out (``found``), in words and numbers, and
-    where to look at it; ``after_pulls``: say that they stand out once each face's pull is off."""
+    """A vetoed split (``calibration``'s) whose clusters stand out (their mean ``silhouette``), in words and
+    numbers, and where to look at it; ``after_pulls``: say that they stand out once each face's pull is
+    off."""
     once = ", once each face's pull is taken off," if after_pulls else ""
     return (
         calibration.split(side_pairs(side), "an upper population")
         + f" that the scorer, trained on other scans, judges different-die; its clusters{once} stand out "
-        f"(silhouette {found.silhouette:.2f}), so coindie cluster --auto takes them for the dies: check a "
+        f"(silhouette {silhouette:.2f}), so coindie cluster --auto takes them for the dies: check a "
         f"few of their pairs in the review app (coindie serve {project.folder})"
     )
 

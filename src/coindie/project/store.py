@@ -726,14 +726,6 @@ class Project:
             return None
         return Overrule(result.overrule_silhouette, result.second_pass, tried[result.second_pass])
 
-    def overrule_silhouette(
-        self, side: str, method: str = "consensus", calibration: HoardCalibration | None = None
-    ) -> float | None:
-        """:meth:`overrule`'s silhouette: how far the clusters ``coindie cluster --auto`` keeps against the
-        scorer's veto stand out; None where it keeps none."""
-        found = self.overrule(side, method, calibration)
-        return None if found is None else found.silhouette
-
     def _cluster_twice(
         self,
         side: str,
