@@ -8,8 +8,9 @@ import trimesh
 
 from coindie.errors import InvalidScanError
 from coindie.ids import parse_face_id
+from coindie.io import mesh as mesh_module
 from coindie.io import read_scan
-from coindie.io.mesh import area_weighted_normals, mesh_scan
+from coindie.io.mesh import area_weighted_normals, merge_duplicate_vertices, mesh_scan
 
 
 def tilted_grid(angle_deg: float = 25.0, n: int = 6) -> tuple[trimesh.Trimesh, np.ndarray]:
@@ -92,3 +93,45 @@ def test_mesh_scan_with_nan_vertex_reports_the_coordinates(tmp_path):
     points = np.array([[0, 0, 0], [1, 0, 0], [0, np.nan, 0]])
     with pytest.raises(InvalidScanError, match="NaN or infinite coordinates"):
         mesh_scan(points, np.array([[0, 1, 2]]), face_id=parse_face_id("x"), path=tmp_path / "m.ply")
+
+
+def stl_corners(seed: int = 0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """A random triangle mesh as an STL stores it, every triangle's corners anew: the corners, the
+    triangles of them (0, 1, 2; 3, 4, 5; ...) and the mesh's own triangles of its vertices."""
+    rng = np.random.default_rng(seed)
+    vertices = rng.normal(size=(300, 3)).astype(np.float32).astype(np.float64)
+    vertices[0] = [0.0, 1.0, 2.0]
+    triangles = np.array([rng.choice(len(vertices), 3, replace=False) for _ in range(900)])
+    corners = vertices[triangles].reshape(-1, 3)
+    corners[triangles.ravel() == 0] = [-0.0, 1.0, 2.0]  # a signed zero is the same coordinate
+    return corners, np.arange(len(corners)).reshape(-1, 3), triangles
+
+
+@pytest.mark.parametrize("colliding", [False, True])
+def test_duplicate_corners_merge_into_the_meshes_vertices(monkeypatch, colliding):
+    corners, triangles, mesh_triangles = stl_corners()
+    if colliding:  # every row hashed to one key: the rows themselves decide
+        monkeypatch.setattr(mesh_module, "_mixed", lambda x: np.zeros_like(x))
+
+    merged, faces = merge_duplicate_vertices(corners, triangles)
+
+    assert len(merged) == len(np.unique(mesh_triangles))
+    np.testing.assert_array_equal(merged[faces], corners.reshape(-1, 3, 3))
+    # one merged vertex for each of the mesh's: the two labellings pair one to one
+    assert len(set(zip(faces.ravel(), mesh_triangles.ravel(), strict=True))) == len(merged)
+    # first appearance order: the vertex of the file's first corner comes first
+    np.testing.assert_array_equal(merged[0], corners[0])
+
+
+def test_stl_reads_like_trimeshs_merged_mesh(tmp_path):
+    corners, triangles, _ = stl_corners(seed=1)
+    path = tmp_path / "L0001D.stl"
+    trimesh.Trimesh(corners, triangles, process=False).export(path)
+    reference = trimesh.load_mesh(path, process=True)
+
+    scan = read_scan(path)
+
+    order, reference_order = np.lexsort(scan.points.T), np.lexsort(reference.vertices.T)
+    np.testing.assert_array_equal(scan.points[order], reference.vertices[reference_order])
+    expected = area_weighted_normals(np.asarray(reference.vertices), np.asarray(reference.faces))
+    np.testing.assert_allclose(scan.normals[order], expected[reference_order], atol=1e-12)
