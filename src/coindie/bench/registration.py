@@ -177,14 +177,8 @@ def parse_method(label: str) -> tuple[str, dict[str, object]]:
         return info.name, {}
     if not rest.endswith("]"):
         raise ParameterError(f"Method {label!r}: parameters are written name[key=value;key=value].")
-    params = {}
-    for item in filter(None, (part.strip() for part in rest[:-1].split(";"))):
-        key, equals, value = item.partition("=")
-        if not equals or not key.strip():
-            raise ParameterError(f"Method {label!r}: {item!r} is not key=value.")
-        full_key, parsed = info.parse(key.strip(), value.strip())
-        params[full_key] = parsed
-    return info.name, params
+    items = filter(None, (part.strip() for part in rest[:-1].split(";")))
+    return info.name, info.parse_items(items, lambda item: f"Method {label!r}: {item!r} is not key=value.")
 
 
 def benchmark_registration(

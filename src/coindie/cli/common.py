@@ -47,20 +47,12 @@ MethodParams = Annotated[
 def method_params(method: str, items: list[str] | None) -> dict[str, object]:
     """``--param key=value`` items as the method's full parameter names and parsed values; a
     ``ParameterError`` names an item not written key=value, an unknown key or a bad value."""
-    from coindie.errors import ParameterError
     from coindie.registration import method_info
 
-    info = method_info(method)
-    params = {}
-    for item in items or []:
-        key, sep, text = item.partition("=")
-        if not sep or not key.strip():
-            raise ParameterError(
-                f"--param must be written key=value (e.g. relief.angle_step=4). Got {item!r}."
-            )
-        full_key, value = info.parse(key.strip(), text.strip())
-        params[full_key] = value
-    return params
+    def written(item: str) -> str:
+        return f"--param must be written key=value (e.g. relief.angle_step=4). Got {item!r}."
+
+    return method_info(method).parse_items(items or [], written)
 
 
 #: Library parameters set by a flag of another name: parameter -> the option's Python name in the command.

@@ -9,7 +9,7 @@ estimates a transform, and the pose is scored on the full clouds and accepted or
 from __future__ import annotations
 
 import time
-from collections.abc import Callable, Iterator, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from contextlib import contextmanager
 from dataclasses import dataclass, field, fields, is_dataclass
 from typing import Any, Protocol
@@ -305,6 +305,19 @@ class MethodInfo:
         full = self.resolve(key)
         part, name = full.split(".", 1)
         return full, self.params()[full].parse(part, name, text)
+
+    def parse_items(self, items: Iterable[str], written: Callable[[str], str]) -> dict[str, Any]:
+        """``key=value`` items as full parameter names and checked values (the command line's
+        ``--param`` and the benchmarks' ``method[key=value;...]``); ``written(item)`` is the message of a
+        ``ParameterError`` for an item that is not ``key=value``."""
+        params = {}
+        for item in items:
+            key, equals, text = item.partition("=")
+            if not equals or not key.strip():
+                raise ParameterError(written(item))
+            full, value = self.parse(key.strip(), text.strip())
+            params[full] = value
+        return params
 
 
 _REGISTRY: dict[str, MethodInfo] = {}
