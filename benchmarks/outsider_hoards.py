@@ -1,6 +1,7 @@
 """Hoards from a second, independent coin generator, to measure coindie on scans it was not built on.
 
     .venv/bin/python benchmarks/outsider_hoards.py OUT [--kinds K,...] [--seed 1] [--dies 12] [--meshes]
+    .venv/bin/python benchmarks/outsider_hoards.py OUT --kinds ordinary --scale 0.55   # coins of 10-12 mm
     .venv/bin/python benchmarks/outsider_hoards.py OUT --evaluate      # init, run, cluster --auto, eval
 
 Every figure of issue 13's matrix comes from `coindie.synth`: the shipped models were trained on hoards of
@@ -18,7 +19,8 @@ imports nothing of coindie (the PLYs and ``labels.csv`` are written here) and ma
 - **Scanners**: jittered sampling grids, noise along z, heights smoothed or not, normals from the sampled
   grid's gradient or estimated by PCA of 16 neighbours, holes, each scan in a random pose.
 
-Hoards of 40 coins (80 faces), 12 dies a side, as the issue's held-out hoards. The kinds follow the issue's
+Hoards of 40 coins (80 faces), 12 dies a side, as the issue's held-out hoards; coins of 18-22 mm, or
+``--scale`` times that (the whole coin and its relief, the scanner unchanged). The kinds follow the issue's
 table: ``ordinary``, ``hard`` (worn, bent, broken, crusted; one type a side, dies 0.25 mm apart),
 ``coarse`` (0.15 mm spacing, 0.03 mm noise), ``mixed`` (two scanners in one hoard), ``flat`` (flat,
 uniform, centred flans), and ``fine`` (the finest scanner of the issue's range, 0.02 mm spacing and 0.003 mm
@@ -366,35 +368,44 @@ def strike(
 
 
 def scan(
-    height: Array, flan: Array, scanner: Scanner, rng: np.random.Generator, *, mesh: bool = False
+    height: Array,
+    flan: Array,
+    scanner: Scanner,
+    rng: np.random.Generator,
+    *,
+    mesh: bool = False,
+    scale: float = 1.0,
 ) -> tuple[Array, Array, Array, NDArray[np.int64] | None]:
     """Points and normals of one face and its edge wall, in a random pose, T_scan_coin, and no triangles;
     with ``mesh``, the face's sampling grid as a triangle mesh instead (two triangles a grid cell whose four
-    corners were kept, facing up; no edge wall): its vertices, their grid normals and the triangles."""
+    corners were kept, facing up; no edge wall): its vertices, their grid normals and the triangles.
+    ``scale``: the coin scanned is the rendered one ``scale`` times as large in every direction (the
+    scanner, its spacing, noise and holes, is not scaled)."""
+    pixel = RENDER_MM * scale  # mm of the scanned coin a rendered pixel covers
     if scanner.smoothed:
-        height = ndimage.gaussian_filter(height, 0.7 * scanner.spacing / RENDER_MM)
+        height = ndimage.gaussian_filter(height, 0.7 * scanner.spacing / pixel)
     n = height.shape[0]
     half = (n - 1) / 2.0
     step = scanner.spacing
-    m = int(FIELD_MM / step)
+    m = int(FIELD_MM * scale / step)
     grid = (np.arange(m) - (m - 1) / 2.0) * step
     gy, gx = np.meshgrid(grid, grid, indexing="ij")
     jitter = rng.uniform(-0.3, 0.3, (2, m, m)) * step
     px, py = gx + jitter[0], gy + jitter[1]
-    rows, cols = py / RENDER_MM + half, px / RENDER_MM + half
+    rows, cols = py / pixel + half, px / pixel + half
     on = ndimage.map_coordinates(flan.astype(np.float64), [rows, cols], order=1) > 0.5
-    z = ndimage.map_coordinates(height, [rows, cols], order=1) + rng.normal(0, scanner.noise, (m, m))
+    z = ndimage.map_coordinates(height, [rows, cols], order=1) * scale + rng.normal(0, scanner.noise, (m, m))
     zy, zx = np.gradient(np.where(on, z, np.nan), step)
     keep = on & np.isfinite(zx) & np.isfinite(zy)
     for _ in range(int(rng.integers(0, scanner.holes + 1))):
-        cx, cy = rng.uniform(-8, 8, 2)
+        cx, cy = rng.uniform(-8, 8, 2) * scale
         a, b = rng.uniform(0.3, 1.5, 2)
         keep &= ((px - cx) / a) ** 2 + ((py - cy) / b) ** 2 > 1
     points = np.stack([px[keep], py[keep], z[keep]], axis=1)
     normals = np.stack([-zx[keep], -zy[keep], np.ones(keep.sum())], axis=1)
     triangles = _grid_triangles(keep) if mesh else None
     if not mesh:
-        points, normals = _with_wall(points, normals, height, flan, scanner, rng)
+        points, normals = _with_wall(points, normals, height, flan, scanner, rng, scale)
     normals /= np.linalg.norm(normals, axis=1, keepdims=True)
     pose = Rotation.random(random_state=rng)
     T_scan_coin = np.eye(4)
@@ -415,20 +426,27 @@ def _grid_triangles(keep: NDArray[np.bool_]) -> NDArray[np.int64]:
 
 
 def _with_wall(
-    points: Array, normals: Array, height: Array, flan: Array, scanner: Scanner, rng: np.random.Generator
+    points: Array,
+    normals: Array,
+    height: Array,
+    flan: Array,
+    scanner: Scanner,
+    rng: np.random.Generator,
+    scale: float = 1.0,
 ) -> tuple[Array, Array]:
     """The face's samples with its edge wall added, and their normals (estimated, for such a scanner)."""
     step = scanner.spacing
+    pixel = RENDER_MM * scale
     half = (height.shape[0] - 1) / 2.0
-    # the edge wall: 1.2 mm down from the outline, normals outwards
+    # the edge wall: 1.2 mm down from the outline (for a coin of the rendered size), normals outwards
     edge = ndimage.binary_erosion(flan) ^ flan
     er, ec = np.nonzero(edge)
-    every = max(int(round(step / RENDER_MM)), 1)
+    every = max(int(round(step / pixel)), 1)
     er, ec = er[::every], ec[::every]
-    ex, ey = (ec - half) * RENDER_MM, (er - half) * RENDER_MM
+    ex, ey = (ec - half) * pixel, (er - half) * pixel
     outward = np.stack([ex, ey], axis=1) / np.maximum(np.hypot(ex, ey), 1e-9)[:, None]
-    top = height[er, ec]
-    depths = np.arange(step, 1.2, step)
+    top = height[er, ec] * scale
+    depths = np.arange(step, 1.2 * scale, step)
     wall = np.concatenate(
         [np.stack([ex, ey, top - d], axis=1) + rng.normal(0, scanner.noise, (len(ex), 3)) for d in depths]
     )
@@ -478,7 +496,13 @@ def write_ply(path: Path, points: Array, normals: Array) -> None:
 
 
 def make_hoard(
-    folder: Path, name: str, seed: int, coins: int = 40, dies: int = 12, meshes: bool = False
+    folder: Path,
+    name: str,
+    seed: int,
+    coins: int = 40,
+    dies: int = 12,
+    meshes: bool = False,
+    scale: float = 1.0,
 ) -> None:
     kind = KINDS[name]
     dies = min(dies, coins)
@@ -499,7 +523,11 @@ def make_hoard(
             height, flan, T_coin_die = strike(die_reliefs[die], die_types[die].radius, kind, rng, faces[face])
             scanner = kind.scanners[int(rng.integers(len(kind.scanners)))]
             faces[face]["scanner"] = kind.scanners.index(scanner)
-            points, normals, T_scan_coin, triangles = scan(height, flan, scanner, rng, mesh=meshes)
+            points, normals, T_scan_coin, triangles = scan(
+                height, flan, scanner, rng, mesh=meshes, scale=scale
+            )
+            T_coin_die[:3, 3] *= scale  # the die is scaled with its coin: a rigid motion between the two
+            faces[face]["flan_radius_mm"] = faces[face]["flan_radius_mm"] * scale
             poses[face] = (T_scan_coin @ T_coin_die).tolist()
             if triangles is None:
                 write_ply(folder / f"{face}.ply", points, normals)
@@ -566,6 +594,13 @@ def main() -> None:
         action="store_true",
         help="write each face as a binary STL mesh of its sampling grid (no normals, no edge wall)",
     )
+    parser.add_argument(
+        "--scale",
+        type=float,
+        default=1.0,
+        help="coins this many times as large in every direction as the kinds' 18-22 mm (the scanner is not "
+        "scaled): 0.55 for obols and small bronzes of 10-12 mm, 1.6 for sestertii of 29-35 mm",
+    )
     parser.add_argument("--evaluate", action="store_true")
     parser.add_argument("--coindie", default=str(Path(sys.executable).with_name("coindie")))
     args = parser.parse_args()
@@ -577,15 +612,20 @@ def main() -> None:
         parser.error(f"--coins must be at least 2 (a hoard needs pairs). Got {args.coins}.")
     if args.dies < 1:
         parser.error(f"--dies must be at least 1. Got {args.dies}.")
+    if not 0.2 <= args.scale <= 3.0:
+        parser.error(f"--scale must be within 0.2 and 3. Got {args.scale}.")
     for name in kinds:
         folder = args.out / (
             f"{name}-{args.seed}"
             + ("" if args.dies == 12 else f"-{args.dies}dies")
             + ("-stl" if args.meshes else "")
+            + ("" if args.scale == 1.0 else f"-x{args.scale:g}")
         )
         if not (folder / "labels.csv").exists():
             seed = args.seed * 100 + list(KINDS).index(name)
-            make_hoard(folder, name, seed, coins=args.coins, dies=args.dies, meshes=args.meshes)
+            make_hoard(
+                folder, name, seed, coins=args.coins, dies=args.dies, meshes=args.meshes, scale=args.scale
+            )
         elif not (folder / "truth.json").exists():  # a hoard made before the script wrote it
             write_truth(folder, json.loads((folder / "poses.json").read_text()))
         if args.evaluate:
