@@ -5,6 +5,7 @@ identical on local processes and on a Dask LocalCluster, bad scans recorded, new
 from __future__ import annotations
 
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -252,3 +253,55 @@ def test_the_run_command_registers_with_the_method_parameters_it_is_given(hoard,
     assert [(p["source"], p["target"]) for p in given_pairs] == [
         (p["source"], p["target"]) for p in default_pairs
     ]
+
+
+def test_a_hoard_of_small_coins_is_scored_with_the_lengths_of_its_size(hoard, tmp_path: Path) -> None:
+    """Four coins of the tiny hoard and their copies 0.55 times as large (10-12 mm, the die's details with
+    them): the run measures the small coins, says so, scales the shipped scorer's lengths (a parameter set
+    of its own) and judges every pair as on the coins of the size it was trained on."""
+    import json
+    from dataclasses import replace
+
+    from typer.testing import CliRunner
+
+    from coindie.cli.app import app
+    from coindie.io import read_scan, write_ply
+
+    own, small = tmp_path / "own", tmp_path / "small"
+    own.mkdir(), small.mkdir()
+    for path in sorted(hoard.glob("L000[1-4]?.ply")):
+        shutil.copy(path, own / path.name)
+        scan = read_scan(path)
+        write_ply(small / path.name, replace(scan, points=scan.points * 0.55))
+    outputs, runs, pairs = {}, {}, {}
+    for name, scans in (("own", own), ("small", small)):
+        init_project(tmp_path / f"p-{name}", scans)
+        command = [
+            "run",
+            str(tmp_path / f"p-{name}"),
+            "--workers",
+            "1",
+            "--exhaustive",
+            "--relay-neighbours",
+            "0",
+        ]
+        result = CliRunner().invoke(app, command)
+        assert result.exit_code == 0, result.output
+        project = open_project(tmp_path / f"p-{name}")
+        outputs[name], runs[name], pairs[name] = result.output, project.latest_run(), project.scored_pairs()
+
+    assert "coins of" not in outputs["own"] and "coin_scale" not in json.loads(runs["own"]["config"])
+    scale = json.loads(runs["small"]["config"])["coin_scale"]
+    assert 2**-1 <= scale <= 2**-0.5  # 0.55 within half a step
+    assert re.search(
+        rf"coins of 1[0-3]\.\d mm \(the median of 8 faces\).* scaled by {scale:.3g} ", outputs["small"]
+    )
+    assert runs["small"]["params_hash"] != runs["own"]["params_hash"]
+    assert [(p["source"], p["target"]) for p in pairs["small"]] == [
+        (p["source"], p["target"]) for p in pairs["own"]
+    ]
+    labels = _labels(hoard)
+    same = [labels[p["source"]] == labels[p["target"]] for p in pairs["own"]]
+    assert 0 < sum(same) < len(same)
+    for a, b, same_die in zip(pairs["own"], pairs["small"], same, strict=True):
+        assert (a["probability"] > 0.5) == (b["probability"] > 0.5) == same_die, (a, b)

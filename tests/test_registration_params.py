@@ -113,3 +113,23 @@ def test_every_method_lists_its_acceptance_check() -> None:
         params = method_info(method).params()
         assert {"check.overlap_distance", "check.min_fitness", "check.max_residual"} <= set(params)
         assert all(p.doc for p in params.values())
+
+
+def test_relief_for_larger_or_smaller_coins_scales_the_lengths_of_the_design_alone() -> None:
+    """The lengths set by the size of a die's details follow the coins; the scanner's (the ICP's reach) and
+    those the user gave do not."""
+    from coindie.registration import method_info
+
+    info = method_info("relief")
+    defaults = {key: p.default for key, p in info.params().items()}
+    assert info.for_coins({"icp.max_distance": 0.2}, 1.0) == {"icp.max_distance": 0.2}
+
+    half = info.for_coins({"margin": 0.3}, 0.5)  # a short name, resolved
+
+    assert half["blocks.window"] == defaults["blocks.window"] / 2
+    assert half["relief.field_size"] == defaults["relief.field_size"] / 2
+    assert half["relief.pixel"] == defaults["relief.pixel"] / 2
+    assert half["margin"] == 0.3 and "relief.margin" not in half  # the one given is left to the user
+    assert "icp.max_distance" not in half and "icp.final_distance" not in half
+    info.build(half)  # every scaled value within its parameter's range
+    assert method_info("fcgf+icp").for_coins({}, 0.5) == {}  # no length of a design declared

@@ -6,8 +6,14 @@ import numpy as np
 import pytest
 from scipy import ndimage
 
+from coindie.errors import ParameterError
 from coindie.scan import Scan
-from coindie.similarity.relief_features import FEATURE_NAMES, _gaussian, relief_features
+from coindie.similarity.relief_features import (
+    FEATURE_NAMES,
+    ReliefFeatureSettings,
+    _gaussian,
+    relief_features,
+)
 
 
 @pytest.mark.parametrize("sigma_px", [2.5, 6.0, 10.0, 15.0, 30.0])
@@ -53,3 +59,40 @@ def test_a_same_die_pair_correlates_and_another_die_does_not() -> None:
     # the coarse band keeps some of the shared cupping near the outline: lower, not near 0
     assert other["ncc_coarse"] < same["ncc_coarse"] - 0.2
     assert same["overlap"] > 0.95 and other["overlap"] > 0.95
+
+
+@pytest.mark.parametrize("scale", [0.55, 1.6])
+def test_a_pair_and_its_copy_at_another_coin_size_give_the_same_features(scale: float) -> None:
+    """Coins `scale` times as large in every direction (the die's details with them): with the settings
+    for such coins the features are the ones of the pair at its own size; with the 20 mm coins' settings the
+    fine band reads other details (the coin's size is a length the features depend on)."""
+    angle = 0.6
+    T = np.eye(4)
+    T[:2, :2] = [[np.cos(angle), -np.sin(angle)], [np.sin(angle), np.cos(angle)]]
+    T[:3, 3] = [3.0, -2.0, 0.5]
+    S = np.diag([scale, scale, scale, 1.0])
+    settings = ReliefFeatureSettings()
+
+    def scaled(face: Scan) -> Scan:
+        return Scan(points=face.points * scale, normals=face.normals)
+
+    moved = []
+    for source in (_face(1, 11, T), _face(2, 12, T)):  # one die, another die
+        target = _face(1, 10, np.eye(4))
+        T_target_source = np.linalg.inv(T)
+        T_scaled = S @ T_target_source @ np.linalg.inv(S)
+        own = relief_features(source, target, T_target_source, settings)
+        copy = relief_features(scaled(source), scaled(target), T_scaled, settings.for_coins(scale))
+        fixed = relief_features(scaled(source), scaled(target), T_scaled, settings)
+        np.testing.assert_allclose(copy, own, atol=2e-3)  # float32 rasters
+        moved.append(np.abs(fixed - own).max())
+    assert max(moved) > 0.2
+
+
+def test_settings_for_coins_of_the_reference_size_are_these() -> None:
+    settings = ReliefFeatureSettings()
+    assert settings.for_coins(1.0) is settings
+    half = settings.for_coins(0.5)
+    assert half.fine_sigma_mm == settings.fine_sigma_mm / 2 and half.size_px == settings.size_px
+    with pytest.raises(ParameterError, match="positive"):
+        settings.for_coins(0.0)

@@ -56,7 +56,7 @@ def method_params(method: str, items: list[str] | None) -> dict[str, object]:
 
 
 #: Library parameters set by a flag of another name: parameter -> the option's Python name in the command.
-FLAG_OF_PARAMETER = {"k": "candidates"}
+FLAG_OF_PARAMETER = {"k": "candidates", "coin_diameter_mm": "coin_diameter"}
 
 # Where the library names a parameter: "The 'k' parameter of RunConfig must be ...", "'workers' must be ...".
 _NAMED_PARAMETER = re.compile(r"'(?P<name>[a-z_][a-z0-9_]*)'(?P<rest> parameter\b| must\b)")

@@ -81,6 +81,13 @@ def run(
     plan_only: Annotated[
         bool, typer.Option(help="Prepare the faces and plan the pairs, score none (see coindie status).")
     ] = False,
+    coin_diameter: Annotated[
+        float | None,
+        typer.Option(
+            help="The coins' diameter in mm, which the shipped scorer's design lengths follow (default: "
+            "measured, the median of the faces'; 20 keeps the lengths it was trained with)."
+        ),
+    ] = None,
 ) -> None:
     """Prepare new faces, plan the pairs, score them in batches (resumable: kill it, run it again)."""
     from coindie.cli.progress import counting_progress
@@ -107,6 +114,7 @@ def run(
         relay_rounds=relay_rounds,
         plan_only=plan_only,
         max_seconds=None if max_minutes is None else 60.0 * max_minutes,
+        coin_diameter_mm=coin_diameter,
     )
     report = run_project(open_project(project), config, progress=counting_progress, echo=typer.echo)
     rate = report.pairs_done / report.stage_seconds["pairs"] if report.stage_seconds.get("pairs") else 0.0

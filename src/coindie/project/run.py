@@ -101,6 +101,16 @@ class RunConfig(Configurable):
     max_seconds: float | None = param(
         None, float, doc="stop scoring (cleanly, resumable) after this long", unit="s", low=0.0, optional=True
     )
+    coin_diameter_mm: float | None = param(
+        None,
+        float,
+        doc="the hoard's coin diameter, which the shipped scorer's design lengths follow "
+        "(None: the median of the faces' diameters; coindie.preprocess.coin_size)",
+        unit="mm",
+        low=0.0,
+        low_open=True,
+        optional=True,
+    )
 
 
 @dataclass
@@ -156,6 +166,11 @@ def run_project(
     try:
         with _stage(report, "faces"):
             _prepare_faces(project, config, backend, report, progress, echo)
+        scale = _coin_scale(project, config, echo)
+        if scale != 1.0:
+            scorer = _scorer(config, scale)
+            project.set_run_params(run_id, scorer.params_hash, _effective(config, scale))
+            project.set_meta(f"populations:{scorer.params_hash}", scorer.populations)
         with _stage(report, "plan"):
             report.plans = _plan(project, config, scorer.params_hash, run_id, echo)
         if not config.plan_only:
@@ -213,16 +228,21 @@ def _no_progress(what: str) -> Iterator[Callable[[int, int], None]]:
 # ------------------------------------------------------------------------------------------------ config
 
 
-def _scorer(config: RunConfig) -> _Scorer:
-    """Resolve the method's full parameters and the classifier; hash everything a pair depends on."""
-    from coindie.registration import get_method
+def _scorer(config: RunConfig, coin_scale: float = 1.0) -> _Scorer:
+    """Resolve the method's full parameters and the classifier; hash everything a pair depends on. On
+    coins ``coin_scale`` times the size the defaults were set for, the method's design lengths and the
+    shipped scorer's follow (:func:`_coin_scale`)."""
+    from coindie.registration import get_method, method_info
 
-    registrar = get_method(config.method, **config.method_params)
+    method_params = method_info(config.method).for_coins(config.method_params, coin_scale)
+    registrar = get_method(config.method, **method_params)
     classifier = _classifier(config)
+    if coin_scale != 1.0:
+        classifier = classifier.for_coins(coin_scale)
     classifier_dict = classifier.to_dict()
     payload = {
         "method": config.method,
-        "method_params": dict(config.method_params),
+        "method_params": method_params,
         "registration_grid_mm": config.registration_grid_mm,
         "classifier": classifier_dict,
         # not part of the pairs' identity: a histogram adds to a pair's figures and changes none of them
@@ -265,8 +285,55 @@ def _start_run(project: Project, config: RunConfig, params_hash: str) -> int:
     return project.start_run(params_hash, effective, __version__, os.getpid(), socket.gethostname())
 
 
-def _effective(config: RunConfig) -> dict[str, Any]:
-    return {**asdict(config), "python": platform.python_version(), "cpu_count": os.cpu_count()}
+def _effective(config: RunConfig, coin_scale: float = 1.0) -> dict[str, Any]:
+    effective = {**asdict(config), "python": platform.python_version(), "cpu_count": os.cpu_count()}
+    return effective if coin_scale == 1.0 else {**effective, "coin_scale": coin_scale}
+
+
+def _coin_scale(project: Project, config: RunConfig, echo: Echo) -> float:
+    """The scale of the hoard's coins against those the shipped scorer was trained on and the method's
+    defaults set for (1: the same, or a scorer of the user's own, ``--classifier``, whose lengths are the
+    user's), said when it is not 1.
+
+    Measured on ``benchmarks/outsider_hoards.py --kinds ordinary --seed 26 --scale 0.55`` (coins of
+    10-12 mm): FMI 0.679 with the lengths of 20 mm coins, 0.959 with the scorer's scaled, 1.000 with the
+    registration's too (BENCHMARK.md, "Coins of other sizes")."""
+    from coindie.preprocess.coin_size import REFERENCE_DIAMETER_MM, coin_scale
+
+    if config.classifier is not None or not hasattr(_classifier(config), "for_coins"):
+        return 1.0
+    if config.coin_diameter_mm is not None:
+        diameter, told = config.coin_diameter_mm, "as given"
+    else:
+        diameters = _face_diameters(project, _face_params(project, config))
+        if not diameters:
+            return 1.0
+        diameter, told = float(np.median(diameters)), f"the median of {len(diameters)} faces"
+    scale = coin_scale([diameter])
+    if scale != 1.0:
+        echo(
+            f"coins of {diameter:.1f} mm ({told}): the lengths of the design's details (registration "
+            f"and relief features) are scaled by {scale:.3g} from those set for {REFERENCE_DIAMETER_MM:g} "
+            "mm coins"
+        )
+    return scale
+
+
+def _face_diameters(project: Project, face_params: str) -> list[float]:
+    """Each prepared face's diameter (:func:`coindie.preprocess.coin_size.face_diameter`), measured once
+    from its cache file and kept in the project's meta table."""
+    from coindie.preprocess.coin_size import face_diameter
+
+    diameters = []
+    for face in project.prepared_faces(face_params):
+        key = f"diameter:{face['file']}"
+        known = project.meta(key)
+        if known is None:
+            with np.load(project.cache_dir / face["file"]) as data:
+                known = repr(face_diameter(data["points"]))
+            project.set_meta(key, known)
+        diameters.append(float(known))
+    return diameters
 
 
 def _check_no_other_run(project: Project) -> None:

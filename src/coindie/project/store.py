@@ -572,6 +572,15 @@ class Project:
             )
         return int(cursor.lastrowid or 0)
 
+    def set_run_params(self, run_id: int, params_hash: str, config: dict[str, Any]) -> None:
+        """The parameter set and configuration of a run, once known after its start (the coin scale
+        follows from the faces it prepares)."""
+        with self.transaction() as db:
+            db.execute(
+                "UPDATE runs SET params_hash = ?, config = ?, updated_at = ? WHERE run_id = ?",
+                (params_hash, json.dumps(config, sort_keys=True), now(), run_id),
+            )
+
     def running_runs(self) -> list[sqlite3.Row]:
         """``run_id``, ``pid``, ``host`` of the runs recorded as running (some may have died)."""
         return self.db.execute("SELECT run_id, pid, host FROM runs WHERE status = 'running'").fetchall()

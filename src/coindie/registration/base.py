@@ -306,6 +306,22 @@ class MethodInfo:
         part, name = full.split(".", 1)
         return full, self.params()[full].parse(part, name, text)
 
+    def for_coins(self, params: Mapping[str, Any], scale: float) -> dict[str, Any]:
+        """``params`` for coins ``scale`` times the size the defaults were set for: each part's
+        ``DESIGN_LENGTHS`` (pixels, bands, windows: the size of a die's details) that ``params`` leaves at
+        its default, scaled; lengths the scanner sets (an ICP's reach) and those given, unchanged."""
+        scaled = dict(params)
+        if scale == 1.0:
+            return scaled
+        given = {self.resolve(key) for key in params}
+        for part in self._all_parts():
+            declared = part.declared()
+            for name in getattr(part, "DESIGN_LENGTHS", ()):
+                key = f"{part.NAME}.{name}"
+                if key not in given:
+                    scaled[key] = declared[name].default * scale
+        return scaled
+
     def parse_items(self, items: Iterable[str], written: Callable[[str], str]) -> dict[str, Any]:
         """``key=value`` items as full parameter names and checked values (the command line's
         ``--param`` and the benchmarks' ``method[key=value;...]``); ``written(item)`` is the message of a

@@ -27,6 +27,7 @@ from __future__ import annotations
 from collections import OrderedDict
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import ClassVar
 
 import numpy as np
 from scipy import ndimage
@@ -54,6 +55,8 @@ class ReliefSearch(Configurable):
     """The global step: relief images and their FFT correlation."""
 
     NAME = "relief"
+    #: The lengths set by the size of a die's details, for coins of 20 mm (:meth:`MethodInfo.for_coins`).
+    DESIGN_LENGTHS: ClassVar[tuple[str, ...]] = ("pixel", "field_size", "high_pass", "margin")
 
     pixel: float = param(
         0.2, unit="mm", low=0.02, high=1.0, doc="pixel of the relief images (the ICP refines below it)"
@@ -225,6 +228,7 @@ class ReliefBlocks(Configurable):
     (:mod:`coindie.registration.relief_blocks`), coarse to fine down to ``pixel``."""
 
     NAME = "blocks"
+    DESIGN_LENGTHS: ClassVar[tuple[str, ...]] = ("pixel", "high_pass", "window")
 
     pixel: float = param(
         0.1, unit="mm", low=0.0, low_open=True, high=1.0, doc="finest pixel of the block matching"

@@ -13,7 +13,7 @@ re-estimates both populations from a new hoard's own pairs. Stored as JSON, neve
 from __future__ import annotations
 
 import json
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from importlib import resources
 from pathlib import Path
 from typing import Any, ClassVar
@@ -76,6 +76,11 @@ class ReliefClassifier(Configurable):
     #: mean and sd of the calibrated log-odds of the training pairs: {"same": (m, s), "different": (m, s)}
     populations: dict[str, tuple[float, float]] = field(default_factory=dict)
     metadata: dict[str, Any] = field(default_factory=dict)
+
+    def for_coins(self, scale: float) -> ReliefClassifier:
+        """This model on coins ``scale`` times as large as those it was trained on: its feature lengths
+        scaled (:meth:`ReliefFeatureSettings.for_coins`), the regression the same."""
+        return self if scale == 1.0 else replace(self, features=self.features.for_coins(scale))
 
     @property
     def is_fitted(self) -> bool:

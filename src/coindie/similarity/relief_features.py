@@ -31,7 +31,7 @@ point clouds; the blurs are scipy's.
 from __future__ import annotations
 
 from collections import OrderedDict
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, replace
 from threading import Lock
 from typing import Any, ClassVar
 
@@ -39,6 +39,7 @@ import numpy as np
 from scipy import fft, ndimage
 
 from coindie.arrays import BoolArray, FloatArray
+from coindie.errors import ParameterError
 from coindie.params import Configurable, Rule, param
 from coindie.preprocess.canonical import CanonicalFrame, canonical_frame
 from coindie.preprocess.heightmap import HeightMap, height_map
@@ -94,6 +95,25 @@ class ReliefFeatureSettings(Configurable):
     @property
     def size_px(self) -> int:
         return int(round(self.field_mm / self.pixel_mm))
+
+    def for_coins(self, scale: float) -> ReliefFeatureSettings:
+        """These settings for coins ``scale`` times as large as those they were set for
+        (:func:`coindie.preprocess.coin_size.coin_scale`): every length scaled, so that a pair and its copy
+        ``scale`` times as large in every direction give the same features."""
+        if scale == 1.0:
+            return self
+        if not (np.isfinite(scale) and scale > 0):
+            raise ParameterError(f"A coin scale must be a positive number. Got {scale}.")
+        return replace(
+            self,
+            pixel_mm=self.pixel_mm * scale,
+            field_mm=self.field_mm * scale,
+            shape_sigma_mm=self.shape_sigma_mm * scale,
+            fine_sigma_mm=self.fine_sigma_mm * scale,
+            coarse_sigma_mm=self.coarse_sigma_mm * scale,
+            window_mm=self.window_mm * scale,
+            margin_mm=self.margin_mm * scale,
+        )
 
     def to_dict(self) -> dict[str, Any]:
         return asdict(self)

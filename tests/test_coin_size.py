@@ -1,0 +1,56 @@
+"""A face's diameter, and the hoard's coin scale that the design lengths follow."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from coindie.preprocess.coin_size import REFERENCE_DIAMETER_MM, coin_scale, face_diameter
+
+
+def disc_face(diameter: float, *, broken: float = 1.0, tilt_deg: float = 35.0, seed: int = 0) -> np.ndarray:
+    """A domed face of ``diameter`` mm on a 0.05 mm grid, cut along a chord at ``broken`` x its radius
+    (1: whole), with a 1.2 mm edge wall, tilted and moved in the scanner's frame."""
+    radius = diameter / 2
+    grid = np.arange(-radius, radius, 0.05)
+    x, y = (a.ravel() for a in np.meshgrid(grid, grid))
+    on = (np.hypot(x, y) <= radius) & (x <= broken * radius)
+    x, y = x[on], y[on]
+    face = np.column_stack([x, y, 0.3 * np.cos(np.hypot(x, y) / radius)])
+    angles = np.linspace(0, 2 * np.pi, 600, endpoint=False)
+    rim = np.column_stack([radius * np.cos(angles), radius * np.sin(angles)])
+    rim = rim[rim[:, 0] <= broken * radius]
+    wall = np.concatenate([np.column_stack([rim, np.full(len(rim), -d)]) for d in np.arange(0, 1.2, 0.05)])
+    points = np.concatenate([face, wall])
+    t = np.radians(tilt_deg)
+    R = np.array([[1, 0, 0], [0, np.cos(t), -np.sin(t)], [0, np.sin(t), np.cos(t)]])
+    shuffled = np.random.default_rng(seed).permutation(len(points))
+    return points[shuffled] @ R.T + [40.0, -12.0, 7.0]
+
+
+@pytest.mark.parametrize("diameter", [10.0, 20.0, 34.0])
+def test_a_faces_diameter_is_measured_whatever_its_pose(diameter):
+    assert face_diameter(disc_face(diameter)) == pytest.approx(diameter, rel=0.02)
+
+
+def test_a_flan_broken_along_a_chord_keeps_its_diameter():
+    assert face_diameter(disc_face(20.0, broken=0.5)) == pytest.approx(20.0, rel=0.02)
+
+
+def test_the_reference_coins_keep_scale_one():
+    rng = np.random.default_rng(1)
+    # faces about the medians measured on the generators' hoards: the independent one's (20.3-20.5 mm),
+    # coindie synth's with the wide physics (21.4) and with the default one (22.3)
+    for low, high in [(18.3, 22.3), (20.4, 22.4), (21.3, 23.3)]:
+        assert coin_scale(rng.uniform(low, high, 40)) == 1.0
+    assert coin_scale([]) == 1.0
+    assert coin_scale([np.nan, 0.0]) == 1.0
+
+
+@pytest.mark.parametrize("median", [8.0, 11.0, 15.0, 27.0, 33.0, 45.0])
+def test_other_coins_scale_to_their_size_within_half_a_step(median):
+    diameters = median * np.array([0.95, 1.0, 1.0, 1.05, 1.3])  # one outlier does not move the median
+    scale = coin_scale(diameters)
+    assert scale != 1.0
+    assert abs(np.log2(scale * REFERENCE_DIAMETER_MM / median)) <= 1 / 8 + 1e-9
+    assert np.log2(scale) * 4 == pytest.approx(round(np.log2(scale) * 4))  # on a step
