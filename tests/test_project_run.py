@@ -19,6 +19,7 @@ import pytest
 
 from coindie.project import init_project, open_project
 from coindie.project.run import RunConfig, run_project, tile_batches
+from coindie.project.status import project_status
 
 #: What a result is, apart from its timings: every stored figure of a pair.
 RESULT_FIELDS = ("source", "target", "side", "origin", "status", "method", "valid", "reason", "probability")
@@ -297,6 +298,9 @@ def test_a_hoard_of_small_coins_is_scored_with_the_lengths_of_its_size(hoard, tm
         rf"coins of 1[0-3]\.\d mm \(the median of 8 faces\).* scaled by {scale:.3g} ", outputs["small"]
     )
     assert runs["small"]["params_hash"] != runs["own"]["params_hash"]
+    told = f"scaled by {scale:.3g} to the coins' size"
+    assert told in project_status(open_project(tmp_path / "p-small")).text()
+    assert told not in project_status(open_project(tmp_path / "p-own")).text()
     assert [(p["source"], p["target"]) for p in pairs["small"]] == [
         (p["source"], p["target"]) for p in pairs["own"]
     ]

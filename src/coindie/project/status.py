@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+import json
 from dataclasses import asdict, dataclass, field
 from typing import Any
 
+from coindie.preprocess.coin_size import REFERENCE_DIAMETER_MM
 from coindie.project.store import Project, elapsed_since, side_pairs
 from coindie.similarity.calibration import HoardCalibration
 
@@ -22,6 +24,7 @@ class ProjectStatus:
     separation: list[str] = field(default_factory=list)  # per side: do the scores separate (words, numbers)
     relays: tuple[int, int] = (0, 0)  # relays tried, and kept (coindie.project.relay)
     unit: str | None = None  # the scans' declared unit (coindie init --unit); None: told from each size
+    coin_scale: float = 1.0  # the design's lengths against the 21.4 mm coins' (coindie.preprocess.coin_size)
 
     def to_dict(self) -> dict[str, Any]:
         return asdict(self)
@@ -45,6 +48,11 @@ class ProjectStatus:
             lines.append(
                 f"last run {run['run_id']}: {run['status']}, started {run['started_at']}, "
                 f"{run['pairs_done']} pairs committed"
+            )
+        if self.coin_scale != 1.0:
+            lines.append(
+                f"the design's lengths (registration and relief features) scaled by {self.coin_scale:.3g} "
+                f"to the coins' size, from those set for {REFERENCE_DIAMETER_MM:g} mm coins"
             )
         if self.pairs_per_second:
             lines.append(f"rate {self.pairs_per_second:.2f} pairs/s")
@@ -77,9 +85,11 @@ def project_status(project: Project, max_errors: int = 50) -> ProjectStatus:
         eta = remaining / rate if rate and remaining else None
     face_errors = project.face_errors()
     pair_errors = project.failed_pairs(params, max_errors)
+    config = json.loads(last_run["config"]) if last_run and last_run.get("config") else {}
     return ProjectStatus(
         str(project.folder), faces, pairs, last_run, rate, eta, face_errors[:max_errors], pair_errors,
         separation_lines(project), project.relay_counts(params), project.unit,
+        float(config.get("coin_scale", 1.0)),
     )  # fmt: skip
 
 
