@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from coindie.preprocess.coin_size import REFERENCE_DIAMETER_MM, coin_scale, face_diameter
+from coindie.preprocess.coin_size import REFERENCE_DIAMETER_MM, SCALE_RANGE, coin_scale, face_diameter
 
 
 def disc_face(diameter: float, *, broken: float = 1.0, tilt_deg: float = 35.0, seed: int = 0) -> np.ndarray:
@@ -54,3 +54,15 @@ def test_other_coins_scale_to_their_size_within_half_a_step(median):
     assert scale != 1.0
     assert abs(np.log2(scale * REFERENCE_DIAMETER_MM / median)) <= 1 / 8 + 1e-9
     assert np.log2(scale) * 4 == pytest.approx(round(np.log2(scale) * 4))  # on a step
+
+
+@pytest.mark.parametrize("median", [0.5, 2.0, 150.0, 400.0])
+def test_coins_read_in_the_wrong_unit_keep_a_scale_every_length_accepts(median):
+    """Coins of 2 mm are a hoard in centimetres read as millimetres: the run must still go on."""
+    from coindie.registration import method_info
+    from coindie.similarity.relief_features import ReliefFeatureSettings
+
+    scale = coin_scale([median])
+    assert scale == (SCALE_RANGE[0] if median < REFERENCE_DIAMETER_MM else SCALE_RANGE[1])
+    method_info("relief").build(method_info("relief").for_coins({}, scale))
+    ReliefFeatureSettings().for_coins(scale)

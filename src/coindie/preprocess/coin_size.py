@@ -27,6 +27,9 @@ from coindie.arrays import FloatArray
 REFERENCE_DIAMETER_MM = 21.4
 #: Coin scales come in steps of 2 ** (1 / this).
 STEPS_PER_OCTAVE = 4
+#: Coin scales are kept within these (coins of 5.4-86 mm, from the smallest fractions to medallions): every
+#: scaled length stays within its parameter's range, and a hoard read in the wrong unit still runs.
+SCALE_RANGE = (0.25, 4.0)
 #: Points of a face used to measure its diameter (a regular subsample of larger clouds).
 _DIAMETER_POINTS = 20000
 #: The share of points left out at either end of each extent (stray points, a scanner's fringe).
@@ -50,10 +53,13 @@ def face_diameter(points: FloatArray) -> float:
 
 def coin_scale(diameters_mm: Iterable[float]) -> float:
     """The median of ``diameters_mm`` over :data:`REFERENCE_DIAMETER_MM`, rounded to a power of
-    2 ** (1 / :data:`STEPS_PER_OCTAVE`): exactly 1 for a median of 19.6-23.3 mm, and 1 when there is none."""
+    2 ** (1 / :data:`STEPS_PER_OCTAVE`) within :data:`SCALE_RANGE`: exactly 1 for a median of 19.6-23.3 mm,
+    and 1 when there is none."""
     measured = np.asarray([d for d in diameters_mm if np.isfinite(d) and d > 0], dtype=np.float64)
     if len(measured) == 0:
         return 1.0
     octaves = np.log2(float(np.median(measured)) / REFERENCE_DIAMETER_MM)
     steps = int(np.round(octaves * STEPS_PER_OCTAVE))
-    return 1.0 if steps == 0 else float(2.0 ** (steps / STEPS_PER_OCTAVE))
+    if steps == 0:
+        return 1.0
+    return float(np.clip(2.0 ** (steps / STEPS_PER_OCTAVE), *SCALE_RANGE))

@@ -298,7 +298,7 @@ def _coin_scale(project: Project, config: RunConfig, echo: Echo) -> float:
     Measured on ``benchmarks/outsider_hoards.py --kinds ordinary --seed 26 --scale 0.55`` (coins of
     10-12 mm): FMI 0.679 with the lengths of 20 mm coins, 0.959 with the scorer's scaled, 1.000 with the
     registration's too (BENCHMARK.md, "Coins of other sizes")."""
-    from coindie.preprocess.coin_size import REFERENCE_DIAMETER_MM, coin_scale
+    from coindie.preprocess.coin_size import REFERENCE_DIAMETER_MM, SCALE_RANGE, coin_scale
 
     if config.classifier is not None or not hasattr(_classifier(config), "for_coins"):
         return 1.0
@@ -311,10 +311,17 @@ def _coin_scale(project: Project, config: RunConfig, echo: Echo) -> float:
         diameter, told = float(np.median(diameters)), f"the median of {len(diameters)} faces"
     scale = coin_scale([diameter])
     if scale != 1.0:
+        low, high = (REFERENCE_DIAMETER_MM * bound for bound in SCALE_RANGE)
+        outside = (
+            f" (as far as they go: coins outside {low:.1f}-{high:.0f} mm are rare; check the scans' unit, "
+            "coindie init --unit)"
+            if not low <= diameter <= high
+            else ""
+        )
         echo(
             f"coins of {diameter:.1f} mm ({told}): the lengths of the design's details (registration "
             f"and relief features) are scaled by {scale:.3g} from those set for {REFERENCE_DIAMETER_MM:g} "
-            "mm coins"
+            f"mm coins{outside}"
         )
     return scale
 
