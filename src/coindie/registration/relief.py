@@ -55,7 +55,7 @@ class ReliefSearch(Configurable):
     """The global step: relief images and their FFT correlation."""
 
     NAME = "relief"
-    #: The lengths set by the size of a die's details, for coins of 20 mm (:meth:`MethodInfo.for_coins`).
+    #: The lengths set by the size of a die's details, for coins of about 21 mm (``MethodInfo.for_coins``).
     DESIGN_LENGTHS: ClassVar[tuple[str, ...]] = ("pixel", "field_size", "high_pass", "margin")
 
     pixel: float = param(

@@ -76,6 +76,13 @@ class ReliefFeatureSettings(Configurable):
         Rule(("field_mm", "pixel_mm"), lambda s: s.field_mm >= 10 * s.pixel_mm, "field_mm >= 10 pixel_mm"),
     )
 
+    #: The lengths set by the size of a die's details, as the registration's parts declare theirs
+    #: (:meth:`coindie.registration.MethodInfo.for_coins`): here every length.
+    DESIGN_LENGTHS: ClassVar[tuple[str, ...]] = (
+        "pixel_mm", "field_mm", "shape_sigma_mm", "fine_sigma_mm", "coarse_sigma_mm", "window_mm",
+        "margin_mm",
+    )  # fmt: skip
+
     pixel_mm: float = param(
         0.1, doc="pixel of the square grid both faces are rasterised on", unit="mm", low=0.0, low_open=True
     )
@@ -104,16 +111,7 @@ class ReliefFeatureSettings(Configurable):
             return self
         if not (np.isfinite(scale) and scale > 0):
             raise ParameterError(f"A coin scale must be a positive number. Got {scale}.")
-        return replace(
-            self,
-            pixel_mm=self.pixel_mm * scale,
-            field_mm=self.field_mm * scale,
-            shape_sigma_mm=self.shape_sigma_mm * scale,
-            fine_sigma_mm=self.fine_sigma_mm * scale,
-            coarse_sigma_mm=self.coarse_sigma_mm * scale,
-            window_mm=self.window_mm * scale,
-            margin_mm=self.margin_mm * scale,
-        )
+        return replace(self, **{name: getattr(self, name) * scale for name in self.DESIGN_LENGTHS})
 
     def to_dict(self) -> dict[str, Any]:
         return asdict(self)
