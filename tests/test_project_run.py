@@ -256,17 +256,25 @@ def test_the_run_command_registers_with_the_method_parameters_it_is_given(hoard,
     ]
 
 
-def test_a_hoard_of_small_coins_is_scored_with_the_lengths_of_its_size(hoard, tmp_path: Path) -> None:
+def test_a_hoard_of_small_coins_is_scored_with_the_lengths_of_its_size(
+    hoard, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
     """Four coins of the tiny hoard and their copies 0.55 times as large (10-12 mm, the die's details with
     them): the run measures the small coins, says so, scales the shipped scorer's lengths (a parameter set
-    of its own) and judges every pair as on the coins of the size it was trained on."""
+    of its own) and judges every pair as on the coins of the size it was trained on. The shipped model is
+    loaded once a run, and each face's diameter is kept."""
     import json
     from dataclasses import replace
 
     from typer.testing import CliRunner
 
+    import coindie.similarity.scorers as scorers
     from coindie.cli.app import app
     from coindie.io import read_scan, write_ply
+
+    loads = []
+    shipped = scorers.default_scorer
+    monkeypatch.setattr(scorers, "default_scorer", lambda *args: loads.append(args) or shipped(*args))
 
     own, small = tmp_path / "own", tmp_path / "small"
     own.mkdir(), small.mkdir()
@@ -286,10 +294,14 @@ def test_a_hoard_of_small_coins_is_scored_with_the_lengths_of_its_size(hoard, tm
             "--relay-neighbours",
             "0",
         ]
+        loads.clear()
         result = CliRunner().invoke(app, command)
         assert result.exit_code == 0, result.output
+        assert len(loads) == 1
         project = open_project(tmp_path / f"p-{name}")
         outputs[name], runs[name], pairs[name] = result.output, project.latest_run(), project.scored_pairs()
+        kept = project.db.execute("SELECT COUNT(*) FROM meta WHERE key LIKE 'diameter:%'").fetchone()[0]
+        assert kept == 8  # each face's diameter, measured once
 
     assert "coins of" not in outputs["own"] and "coin_scale" not in json.loads(runs["own"]["config"])
     scale = json.loads(runs["small"]["config"])["coin_scale"]

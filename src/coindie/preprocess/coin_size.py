@@ -21,6 +21,7 @@ from collections.abc import Iterable
 import numpy as np
 
 from coindie.arrays import FloatArray
+from coindie.errors import ParameterError
 
 #: The coin diameter (mm) the design lengths were set for: the median of the faces the shipped scorer was
 #: trained on (``coindie synth --physics wide``), as :func:`face_diameter` measures them.
@@ -51,14 +52,19 @@ def face_diameter(points: FloatArray) -> float:
     return float(np.max(high - low))
 
 
-def coin_scale(diameters_mm: Iterable[float]) -> float:
-    """The median of ``diameters_mm`` over :data:`REFERENCE_DIAMETER_MM`, rounded to a power of
-    2 ** (1 / :data:`STEPS_PER_OCTAVE`) within :data:`SCALE_RANGE`: exactly 1 for a median of 19.6-23.3 mm,
-    and 1 when there is none."""
+def hoard_diameter(diameters_mm: Iterable[float]) -> float | None:
+    """The hoard's coin diameter (mm): the median of its faces' measured ``diameters_mm`` (a face too
+    small to measure, 0 or NaN, left out); None when there is none."""
     measured = np.asarray([d for d in diameters_mm if np.isfinite(d) and d > 0], dtype=np.float64)
-    if len(measured) == 0:
-        return 1.0
-    octaves = np.log2(float(np.median(measured)) / REFERENCE_DIAMETER_MM)
+    return float(np.median(measured)) if len(measured) else None
+
+
+def coin_scale(diameter_mm: float) -> float:
+    """``diameter_mm`` (a hoard's, :func:`hoard_diameter`) over :data:`REFERENCE_DIAMETER_MM`, rounded to a
+    power of 2 ** (1 / :data:`STEPS_PER_OCTAVE`) within :data:`SCALE_RANGE`: exactly 1 for 19.6-23.3 mm."""
+    if not (np.isfinite(diameter_mm) and diameter_mm > 0):
+        raise ParameterError(f"A coin diameter must be a positive number of mm. Got {diameter_mm}.")
+    octaves = np.log2(diameter_mm / REFERENCE_DIAMETER_MM)
     steps = int(np.round(octaves * STEPS_PER_OCTAVE))
     if steps == 0:
         return 1.0

@@ -146,6 +146,7 @@ class _Scorer:
     config_text: str
     params_hash: str
     populations: str  # JSON: the scorer's training populations, where the per-hoard calibration starts
+    face_params: str  # the hash of the prepared faces' parameters (their cache files)
 
 
 def run_project(
@@ -155,7 +156,8 @@ def run_project(
     config = config or RunConfig()
     progress = progress or _no_progress
     start = time.perf_counter()
-    scorer = _scorer(config)
+    classifier = _classifier(config)
+    scorer = _scorer(config, classifier)
     _refresh_scans(project, echo)
     run_id = _start_run(project, config, scorer.params_hash)
     project.set_meta(f"populations:{scorer.params_hash}", scorer.populations)
@@ -165,14 +167,14 @@ def run_project(
     status, message = "failed", ""
     try:
         with _stage(report, "faces"):
-            _prepare_faces(project, config, backend, report, progress, echo)
-        scale = _coin_scale(project, config, echo)
+            _prepare_faces(project, config, _cache_grid(classifier), backend, report, progress, echo)
+        scale = _coin_scale(project, config, classifier, scorer.face_params, echo)
         if scale != 1.0:
-            scorer = _scorer(config, scale)
+            scorer = _scorer(config, classifier, scale)
             project.set_run_params(run_id, scorer.params_hash, _effective(config, scale))
             project.set_meta(f"populations:{scorer.params_hash}", scorer.populations)
         with _stage(report, "plan"):
-            report.plans = _plan(project, config, scorer.params_hash, run_id, echo)
+            report.plans = _plan(project, config, scorer, run_id, echo)
         if not config.plan_only:
             scoring = _Scoring(project, config, scorer, backend, report, progress, echo, time.perf_counter())
             with _stage(report, "pairs"):
@@ -228,15 +230,16 @@ def _no_progress(what: str) -> Iterator[Callable[[int, int], None]]:
 # ------------------------------------------------------------------------------------------------ config
 
 
-def _scorer(config: RunConfig, coin_scale: float = 1.0) -> _Scorer:
-    """Resolve the method's full parameters and the classifier; hash everything a pair depends on. On
-    coins ``coin_scale`` times the size the defaults were set for, the method's design lengths and the
-    shipped scorer's follow (:func:`_coin_scale`)."""
+def _scorer(config: RunConfig, classifier: Any, coin_scale: float = 1.0) -> _Scorer:
+    """Resolve the method's full parameters; hash everything a pair depends on (the method, its
+    parameters, ``classifier``: :func:`_classifier`). On coins ``coin_scale`` times the size the defaults
+    were set for, the method's design lengths and the shipped scorer's follow (:func:`_coin_scale`); the
+    faces are prepared once for every scale (the classifier's grids are not design lengths)."""
     from coindie.registration import get_method, method_info
 
     method_params = method_info(config.method).for_coins(config.method_params, coin_scale)
     registrar = get_method(config.method, **method_params)
-    classifier = _classifier(config)
+    face_params = face_params_hash(_cache_grid(classifier), config.registration_grid_mm)
     if coin_scale != 1.0:
         classifier = classifier.for_coins(coin_scale)
     classifier_dict = classifier.to_dict()
@@ -254,14 +257,16 @@ def _scorer(config: RunConfig, coin_scale: float = 1.0) -> _Scorer:
         "resolved_params": {k: repr(v) for k, v in sorted(registrar.params.items())},
         "registration_grid_mm": config.registration_grid_mm,
         "classifier": classifier_dict,
-        "faces": face_params_hash(_cache_grid(classifier), config.registration_grid_mm),
+        "faces": face_params,
     }
     digest = hashlib.sha256(json.dumps(identity, sort_keys=True, default=str).encode()).hexdigest()[:16]
     populations = json.dumps(getattr(classifier, "populations", {}) or {})
-    return _Scorer(json.dumps(payload, sort_keys=True), digest, populations)
+    return _Scorer(json.dumps(payload, sort_keys=True), digest, populations, face_params)
 
 
 def _classifier(config: RunConfig) -> Any:
+    """The run's same-die classifier: ``--classifier``'s file, else the shipped model of ``--scorer``
+    (loaded once a run)."""
     from coindie.similarity.scorers import default_scorer, load_scorer
 
     try:
@@ -290,7 +295,7 @@ def _effective(config: RunConfig, coin_scale: float = 1.0) -> dict[str, Any]:
     return effective if coin_scale == 1.0 else {**effective, "coin_scale": coin_scale}
 
 
-def _coin_scale(project: Project, config: RunConfig, echo: Echo) -> float:
+def _coin_scale(project: Project, config: RunConfig, classifier: Any, face_params: str, echo: Echo) -> float:
     """The scale of the hoard's coins against those the shipped scorer was trained on and the method's
     defaults set for (1: the same, or a scorer of the user's own, ``--classifier``, whose lengths are the
     user's), said when it is not 1.
@@ -298,18 +303,19 @@ def _coin_scale(project: Project, config: RunConfig, echo: Echo) -> float:
     Measured on ``benchmarks/outsider_hoards.py --kinds ordinary --seed 26 --scale 0.55`` (coins of
     10-12 mm): FMI 0.679 with the lengths of 20 mm coins, 0.959 with the scorer's scaled, 1.000 with the
     registration's too (BENCHMARK.md, "Coins of other sizes")."""
-    from coindie.preprocess.coin_size import REFERENCE_DIAMETER_MM, SCALE_RANGE, coin_scale
+    from coindie.preprocess.coin_size import REFERENCE_DIAMETER_MM, SCALE_RANGE, coin_scale, hoard_diameter
 
-    if config.classifier is not None or not hasattr(_classifier(config), "for_coins"):
+    if config.classifier is not None or not hasattr(classifier, "for_coins"):
         return 1.0
     if config.coin_diameter_mm is not None:
         diameter, told = config.coin_diameter_mm, "as given"
     else:
-        diameters = _face_diameters(project, _face_params(project, config))
-        if not diameters:
+        diameters = _face_diameters(project, face_params)
+        median = hoard_diameter(diameters)
+        if median is None:
             return 1.0
-        diameter, told = float(np.median(diameters)), f"the median of {len(diameters)} faces"
-    scale = coin_scale([diameter])
+        diameter, told = median, f"the median of {len(diameters)} faces"
+    scale = coin_scale(diameter)
     if scale != 1.0:
         low, high = (REFERENCE_DIAMETER_MM * bound for bound in SCALE_RANGE)
         outside = (
@@ -331,15 +337,16 @@ def _face_diameters(project: Project, face_params: str) -> list[float]:
     from its cache file and kept in the project's meta table."""
     from coindie.preprocess.coin_size import face_diameter
 
-    diameters = []
+    diameters, measured = [], {}
     for face in project.prepared_faces(face_params):
         key = f"diameter:{face['file']}"
         known = project.meta(key)
         if known is None:
             with np.load(project.cache_dir / face["file"]) as data:
-                known = repr(face_diameter(data["points"]))
-            project.set_meta(key, known)
+                known = measured[key] = repr(face_diameter(data["points"]))
         diameters.append(float(known))
+    if measured:
+        project.set_metas(measured)  # one transaction, not one a face
     return diameters
 
 
@@ -370,10 +377,14 @@ def pid_alive(pid: int | None) -> bool:
 
 
 def _prepare_faces(
-    project: Project, config: RunConfig, backend: Backend, report: RunReport, progress: Progress, echo: Echo
+    project: Project,
+    config: RunConfig,
+    grid: float,
+    backend: Backend,
+    report: RunReport,
+    progress: Progress,
+    echo: Echo,
 ) -> None:
-    classifier = _classifier(config)
-    grid = _cache_grid(classifier)
     params = face_params_hash(grid, config.registration_grid_mm)
     unit = project.unit
     tasks = []
@@ -427,9 +438,9 @@ def _record_face(project: Project, params: str, result: dict[str, Any]) -> None:
 # -------------------------------------------------------------------------------------------------- plan
 
 
-def _plan(project: Project, config: RunConfig, params_hash: str, run_id: int, echo: Echo) -> list[SidePlan]:
-    face_params = _face_params(project, config)
-    rows = project.prepared_faces(face_params)
+def _plan(project: Project, config: RunConfig, scorer: _Scorer, run_id: int, echo: Echo) -> list[SidePlan]:
+    params_hash = scorer.params_hash
+    rows = project.prepared_faces(scorer.face_params)
     plans = []
     for side in sorted({r["side"] for r in rows}):
         faces = [r["face_id"] for r in rows if r["side"] == side]
@@ -479,10 +490,6 @@ def _plan_line(plan: SidePlan, config: RunConfig) -> str:
     return text + f"; {plan.n_new:,} newly planned"
 
 
-def _face_params(project: Project, config: RunConfig) -> str:
-    return face_params_hash(_cache_grid(_classifier(config)), config.registration_grid_mm)
-
-
 # ------------------------------------------------------------------------------------------------- pairs
 
 
@@ -510,7 +517,7 @@ def _score_pairs(run: _Scoring) -> None:
     todo = project.pairs_with_status(scorer.params_hash, statuses)
     if not todo:
         return
-    files = _cache_files(project, config)
+    files = _cache_files(project, scorer.face_params)
     batches = [
         PairBatch(
             tuple(pairs),
@@ -554,7 +561,7 @@ def _relay_pairs(run: _Scoring) -> None:
     if not get_method(config.method, **config.method_params).refines_from_pose:
         run.echo(f"no relays: method {config.method!r} cannot start from a given pose")
         return
-    files = _cache_files(project, config)
+    files = _cache_files(project, scorer.face_params)
     for round_ in range(1, config.relay_rounds + 1):
         tried = project.tried_relays(scorer.params_hash)
         relays = []
@@ -610,8 +617,8 @@ def _relay_batches(
     ]
 
 
-def _cache_files(project: Project, config: RunConfig) -> dict[str, str]:
-    rows = project.prepared_faces(_face_params(project, config))
+def _cache_files(project: Project, face_params: str) -> dict[str, str]:
+    rows = project.prepared_faces(face_params)
     return {r["face_id"]: str(project.cache_dir / r["file"]) for r in rows}
 
 
