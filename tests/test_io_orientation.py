@@ -144,7 +144,6 @@ def test_normals_all_into_a_worn_coin_are_turned_out_by_its_wall_alone(tmp_path:
         np.testing.assert_allclose(read.normals, read_ply(tmp_path / "L0001D.ply").normals * sign, atol=1e-12)
 
 
-
 def _bordered_face(ridge_mm: float = 0.25, wall_mm: float = 0.4, spacing: float = 0.05) -> Scan:
     """A face of 20 mm whose outline cuts through its border (a ridge ``ridge_mm`` high over its outer
     0.5 mm, steep-sided), with a wall going ``wall_mm`` down from the ridge's top, as a scanner looking down
