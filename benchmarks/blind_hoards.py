@@ -4,7 +4,8 @@
 Writes, for each requested *kind*, a folder ``OUT/<kind>-<seed>/`` holding one PLY
 point cloud per coin face (``L0001D.ply`` obverse, ``L0001R.ply`` reverse), the die
 labels (``labels.csv``), the true rigid pose of every scan relative to its die
-(``poses.json``) and everything each face was drawn with (``faces.json``).
+(``poses.json``; the same in ``truth.json`` and ``splits.csv``, the form ``coindie bench registration``
+reads) and everything each face was drawn with (``faces.json``).
 Units are millimetres throughout.
 
 Written blind at stop 49 (from issue 13's ranges and the paper, without reading coindie's code, tests,
@@ -470,7 +471,7 @@ LEGENDS = (
     "CALIIAGIIS",
     "ATEVLA",
     "DVRNACOS",
-    "ANDOB",
+    "ANDOS",  # every letter of a legend must be in ALPHABET
     "CRICIRV",
     "PIXTILOS",
     "SEDVLLVS",
@@ -1704,6 +1705,11 @@ def make_hoard(out: Path, kind: str, seed: int, n_coins: int, n_dies: int) -> di
             counts.append(len(P))
     (folder / "labels.csv").write_text("coin_id,die_id\n" + "\n".join(labels) + "\n")
     (folder / "poses.json").write_text(json.dumps(poses, indent=1))
+    # the same poses as ``coindie bench registration`` reads them (every face in its test split)
+    (folder / "truth.json").write_text(json.dumps({"faces": poses}, indent=1))
+    (folder / "splits.csv").write_text(
+        "face_id,split\n" + "".join(f"{f},registration_test\n" for f in sorted(poses))
+    )
     (folder / "faces.json").write_text(json.dumps(faces, indent=1))
     types_meta = {
         side: [dict(t.meta, H_mm=round(t.H, 3), die_radius_mm=round(t.die_radius, 3)) for t in sides[side][0]]
