@@ -39,6 +39,7 @@ undecided and takes seconds on 400,000 points.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 from numpy.typing import NDArray
@@ -102,14 +103,21 @@ class _FaceSample:
         """The points whose normal (either sign) is within ``FACE_ANGLE_DEG`` of the axis."""
         return np.abs(self.normals @ self.axis) >= np.cos(np.radians(FACE_ANGLE_DEG))
 
-    def across(self) -> FloatArray:
-        """(n, 2) coordinates across the axis (on the face's two larger principal axes)."""
-        return self.centred @ self.vectors[:, [2, 1]]
+    @cached_property
+    def in_plane(self) -> FloatArray:
+        """(3, 2): the face's two larger principal axes, across its axis."""
+        return self.vectors[:, [2, 1]]
 
+    @cached_property
+    def across(self) -> FloatArray:
+        """(n, 2) coordinates across the axis (on :attr:`in_plane`)."""
+        return self.centred @ self.in_plane
+
+    @cached_property
     def wall(self) -> NDArray[np.bool_]:
         """The points of the edge wall: not facing along the axis, at the outline (steep relief inside it is
         not the wall)."""
-        radial = np.linalg.norm(self.across(), axis=1)
+        radial = np.linalg.norm(self.across, axis=1)
         return ~self.facing() & (radial >= _WALL_RING * np.percentile(radial, 99))
 
 
@@ -121,7 +129,7 @@ def up_evidence(points: FloatArray, normals: FloatArray) -> UpEvidence:
 def _evidence(sample: _FaceSample) -> UpEvidence:
     axis = sample.axis
     height = sample.centred @ axis
-    x, y = sample.across().T
+    x, y = sample.across.T
     face = sample.facing()
     if np.count_nonzero(face) < _MIN_FACE_POINTS:
         return UpEvidence(axis, 0, "none", 0.0, 0.0)
@@ -138,7 +146,7 @@ def _evidence(sample: _FaceSample) -> UpEvidence:
         fitted = face & (np.abs(residual) < 3.0 * spread)
     q10, q50, q90 = np.percentile(residual[face], [10, 50, 90])
     skewness = float(((q90 - q50) - (q50 - q10)) / max(q90 - q10, 1e-12))
-    wall = sample.wall()
+    wall = sample.wall
     offset = float(np.median(residual[wall])) / spread if wall.any() else 0.0
     if wall.mean() >= _MIN_WALL_SHARE and abs(offset) >= _MIN_WALL_OFFSET:
         return UpEvidence(axis, -int(np.sign(offset)), "wall", offset, skewness)
@@ -155,12 +163,11 @@ def wall_normals_outward(points: FloatArray, normals: FloatArray) -> float | Non
 
 
 def _wall_outward(sample: _FaceSample) -> float | None:
-    wall = sample.wall()
+    wall = sample.wall
     if wall.mean() < _MIN_WALL_SHARE:
         return None
-    across = sample.across()[wall]
-    normals_across = sample.normals[wall] @ sample.vectors[:, [2, 1]]
-    return float(np.mean(np.einsum("ij,ij->i", normals_across, across) > 0))
+    normals_across = sample.normals[wall] @ sample.in_plane
+    return float(np.mean(np.einsum("ij,ij->i", normals_across, sample.across[wall]) > 0))
 
 
 def _up(evidence: UpEvidence) -> FloatArray:

@@ -167,7 +167,9 @@ def run_project(
     status, message = "failed", ""
     try:
         with _stage(report, "faces"):
-            _prepare_faces(project, config, _cache_grid(classifier), backend, report, progress, echo)
+            _prepare_faces(
+                project, config, _cache_grid(classifier), scorer.face_params, backend, report, progress, echo
+            )
         scale = _coin_scale(project, config, classifier, scorer.face_params, echo)
         if scale != 1.0:
             scorer = _scorer(config, classifier, scale)
@@ -380,12 +382,14 @@ def _prepare_faces(
     project: Project,
     config: RunConfig,
     grid: float,
+    params: str,
     backend: Backend,
     report: RunReport,
     progress: Progress,
     echo: Echo,
 ) -> None:
-    params = face_params_hash(grid, config.registration_grid_mm)
+    """Prepare the project's new and changed faces on ``grid`` (the classifier's cache grid), kept under
+    ``params`` (their hash, :attr:`_Scorer.face_params`)."""
     unit = project.unit
     tasks = []
     for scan in project.scans():
