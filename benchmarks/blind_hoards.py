@@ -1743,6 +1743,8 @@ def main(argv: list[str] | None = None) -> int:
     for k in kinds:
         if k not in KINDS:
             ap.error(f"unknown kind {k!r}; choose among {', '.join(KIND_NAMES)}")
+    if not 1 <= a.dies <= a.coins:
+        ap.error(f"--dies must be at least 1 and at most --coins ({a.coins}); got {a.dies}")
     for k in kinds:
         print(json.dumps(make_hoard(a.out, k, a.seed, a.coins, a.dies)), flush=True)
     return 0
