@@ -29,12 +29,18 @@ def test_the_blurs_are_scipys_gaussian_filter(sigma_px: float, shape: tuple[int,
     np.testing.assert_allclose(blurred, expected, rtol=0, atol=1e-6 * float(np.abs(expected).max()))
 
 
-def _face(relief_seed: int, noise_seed: int, T: np.ndarray) -> Scan:
-    """A 16 mm face (0.05 mm grid) of a die's random relief, cupped, with scanner noise, moved by T."""
+def _face(
+    relief_seed: int, noise_seed: int, T: np.ndarray, pellet: tuple[float, float] | None = None
+) -> Scan:
+    """A 16 mm face (0.05 mm grid) of a die's random relief, cupped, with scanner noise, moved by T;
+    ``pellet``: where a 1.2 mm pellet 0.4 mm high stands on the die (its relief is tenfold the rest's)."""
     grid = np.arange(-8.0, 8.0, 0.05)
     x, y = np.meshgrid(grid, grid)
     inside = np.hypot(x, y) < 7.5
     die = ndimage.gaussian_filter(np.random.default_rng(relief_seed).standard_normal(x.shape), 4) * 0.3
+    if pellet is not None:
+        r = np.hypot(x - pellet[0], y - pellet[1]) / 0.6
+        die = np.maximum(die, 0.4 * np.sqrt(np.clip(1 - r**2, 0, None)))
     z = die + 0.004 * (x**2 + y**2) + np.random.default_rng(noise_seed).normal(0, 0.003, x.shape)
     points = np.column_stack([x[inside], y[inside], z[inside]])
     gy, gx = np.gradient(z, 0.05)
@@ -59,6 +65,37 @@ def test_a_same_die_pair_correlates_and_another_die_does_not() -> None:
     # the coarse band keeps some of the shared cupping near the outline: lower, not near 0
     assert other["ncc_coarse"] < same["ncc_coarse"] - 0.2
     assert same["overlap"] > 0.95 and other["overlap"] > 0.95
+
+
+def test_one_strong_element_in_common_does_not_make_two_dies_correlate() -> None:
+    """Two dies whose only shared detail is one pellet in the same place (a wrong pose can put a pellet
+    of each on the other): without clipping the pellet carries the fine band's correlation and the best
+    windows'; with each band clipped at 3 robust standard deviations the pair reads as two dies, while two
+    strikes of one die with that pellet still correlate."""
+    angle = 0.6
+    T = np.eye(4)
+    T[:2, :2] = [[np.cos(angle), -np.sin(angle)], [np.sin(angle), np.cos(angle)]]
+    T[:3, 3] = [3.0, -2.0, 0.5]
+    pellet = (2.0, 1.0)
+    target = _face(1, 10, np.eye(4), pellet)
+    features = {}
+    for clip_sd in (0.0, ReliefFeatureSettings().clip_sd):
+        settings = ReliefFeatureSettings(clip_sd=clip_sd)
+        for name, source in (("same", _face(1, 11, T, pellet)), ("other", _face(2, 12, T, pellet))):
+            values = relief_features(source, target, np.linalg.inv(T), settings)
+            features[name, clip_sd] = dict(zip(FEATURE_NAMES, values, strict=True))
+    assert ReliefFeatureSettings().clip_sd == 3.0
+    assert features["other", 0.0]["ncc_fine"] > 0.5 and features["other", 0.0]["local_p90"] > 0.7
+    assert features["other", 3.0]["ncc_fine"] < 0.3 and features["other", 3.0]["local_p90"] < 0.5
+    assert features["same", 3.0]["ncc_fine"] > 0.85 and features["same", 3.0]["local_median"] > 0.85
+
+
+def test_settings_written_before_clipping_describe_unclipped_features() -> None:
+    """A model file's feature settings without ``clip_sd`` were written before the bands were clipped:
+    they read back as no clipping, and today's settings round-trip as they are."""
+    old = {k: v for k, v in ReliefFeatureSettings().to_dict().items() if k != "clip_sd"}
+    assert ReliefFeatureSettings.from_dict(old).clip_sd == 0.0
+    assert ReliefFeatureSettings.from_dict(ReliefFeatureSettings().to_dict()) == ReliefFeatureSettings()
 
 
 @pytest.mark.parametrize("scale", [0.55, 1.6])

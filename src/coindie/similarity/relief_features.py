@@ -12,7 +12,9 @@ absolute scale of one scanner:
    off the source;
 3. both reliefs are split into bands by differences of mask-normalised Gaussian blurs — *fine* (detail
    below ``fine_sigma_mm``) and *coarse* (``fine_sigma_mm`` to ``coarse_sigma_mm``) — over the part both
-   faces cover, a ``margin_mm`` band inside the outlines left out (edge wall, flan border);
+   faces cover, a ``margin_mm`` band inside the outlines left out (edge wall, flan border); each band's
+   values beyond ``clip_sd`` robust standard deviations are clipped, so that no single strong element
+   (a pellet, a crust, a pit) carries the correlation;
 4. the features are normalised cross-correlations (dimensionless, in [-1, 1]): over the whole overlap per
    band, and *local* ones in Gaussian windows of ``window_mm`` whose median and 90th percentile say how much
    of the face agrees (a weak strike, a crust or a worn half lowers the global figure, not the share that
@@ -90,6 +92,12 @@ class ReliefFeatureSettings(Configurable):
     shape_sigma_mm: float = param(
         3.0, doc="blur of the shape difference taken off the source", unit="mm", low=0.0, low_open=True
     )
+    # 0.2 mm told dies apart better at the true pose of the all-hard hoards of the two generators coindie
+    # did not write (local median AUC 0.928 -> 0.976 on blind hard-33's obverses, 0.953 -> 0.996 on
+    # outsider hard-33's), and as well on coarse scanners, and a model trained with it separated those
+    # hoards' registered pairs better (pair AUC 0.845 -> 0.888, 0.874 -> 0.898 on the obverses); but
+    # their die studies came out lower (FMI 0.800 -> 0.764, 0.961 -> 0.943), so 0.3 stays
+    # (BENCHMARK.md, "One element cannot carry a correlation").
     fine_sigma_mm: float = param(0.3, doc="the fine band: detail below it", unit="mm", low=0.0)
     coarse_sigma_mm: float = param(1.0, doc="the coarse band: fine_sigma_mm to it", unit="mm", low=0.0)
     window_mm: float = param(
@@ -97,6 +105,18 @@ class ReliefFeatureSettings(Configurable):
     )
     margin_mm: float = param(
         0.6, doc="band inside the outlines left out (edge wall, flan border)", unit="mm", low=0.0
+    )
+    # A correlation is a sum over pixels, so one element of large relief detail (a pellet, a letter's
+    # serif, a crust, a pit) can carry it alone. Two different dies registered at a wrong pose where
+    # their flans share a lens of a quarter of their area scored ncc_fine 0.5-0.87 that way: one pellet
+    # of each on top of the other and field around (the blind generator's flat-31 and ordinary-32,
+    # BENCHMARK.md, "One element cannot carry a correlation"). Clipped at 3 robust standard deviations,
+    # each band keeps the many small details a die leaves everywhere and loses the lone element's weight.
+    clip_sd: float = param(
+        3.0,
+        doc="each band's values beyond this many robust standard deviations (1.4826 x the median absolute "
+        "deviation over the overlap) are clipped before correlating; 0: no clipping",
+        low=0.0,
     )
 
     @property
@@ -118,7 +138,10 @@ class ReliefFeatureSettings(Configurable):
 
     @classmethod
     def from_dict(cls, data: dict[str, Any]) -> ReliefFeatureSettings:
-        return cls(**{k: float(v) for k, v in data.items()})
+        """Settings as :meth:`to_dict` wrote them. A dict without ``clip_sd`` was written before the bands
+        were clipped, and describes features computed without clipping (``clip_sd`` 0)."""
+        values = {"clip_sd": 0.0} | {k: float(v) for k, v in data.items()}
+        return cls(**values)
 
 
 @dataclass(frozen=True, eq=False)
@@ -154,8 +177,8 @@ def relief_features(
     a = np.where(both, source_heights, 0.0).astype(np.float32)
     b = np.where(both, target_heights, 0.0).astype(np.float32)
     a = a - np.where(both, weights.blur(a - b, settings.shape_sigma_mm / settings.pixel_mm), 0.0)
-    fine_a, coarse_a = _bands(a, weights, settings)
-    fine_b, coarse_b = _bands(b, weights, settings)
+    fine_a, coarse_a = _clipped(_bands(a, weights, settings), both, settings.clip_sd)
+    fine_b, coarse_b = _clipped(_bands(b, weights, settings), both, settings.clip_sd)
     local = _local_ncc(fine_a, fine_b, weights, settings.window_mm / settings.pixel_mm)
     median, p90 = np.percentile(local, [50, 90]) if len(local) else (0.0, 0.0)
     return np.array(
@@ -220,6 +243,18 @@ def _bands(
     coarse_blur = weights.blur(heights, settings.coarse_sigma_mm / settings.pixel_mm)
     mask = weights.mask
     return np.where(mask, heights - fine_blur, 0.0), np.where(mask, fine_blur - coarse_blur, 0.0)
+
+
+def _clipped(bands: tuple[FloatArray, ...], mask: BoolArray, clip_sd: float) -> tuple[FloatArray, ...]:
+    """Each band clipped at ``clip_sd`` robust standard deviations of its values inside ``mask``."""
+    if clip_sd <= 0:
+        return bands
+    clipped = []
+    for band in bands:
+        inside = band[mask]
+        limit = clip_sd * 1.4826 * float(np.median(np.abs(inside - np.median(inside))))
+        clipped.append(np.clip(band, -limit, limit) if limit > _EPS else band)
+    return tuple(clipped)
 
 
 def _ncc(a: FloatArray, b: FloatArray, mask: BoolArray) -> float:
