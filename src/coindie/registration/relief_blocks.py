@@ -85,9 +85,10 @@ class FineRelief:
         high_pass_mm: float,
         margin_mm: float,
         steps: tuple[int, ...],
+        clip_sd: float = 0.0,
     ) -> FineRelief:
         """From a centred square height grid (NaN where there is no surface)."""
-        detail, mask, _ = footprint_detail(values, pixel_mm, high_pass_mm, margin_mm)
+        detail, mask, _ = footprint_detail(values, pixel_mm, high_pass_mm, margin_mm, clip_sd)
         weight = mask.astype(np.float64)
         levels = {}
         for step in steps:

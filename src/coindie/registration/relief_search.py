@@ -76,10 +76,11 @@ def high_pass(values: FloatImage, mask: BoolImage, sigma_px: float) -> FloatImag
 
 
 def footprint_detail(
-    values: FloatImage, pixel_mm: float, high_pass_mm: float, margin_mm: float
+    values: FloatImage, pixel_mm: float, high_pass_mm: float, margin_mm: float, clip_sd: float = 0.0
 ) -> tuple[FloatImage, BoolImage, NDArray[np.int32]]:
     """A centred height grid's (NaN where there is no surface) relief detail, high-passed inside its
-    footprint less ``margin_mm``; that footprint; and each pixel's taxicab distance to the outside (pixels).
+    footprint less ``margin_mm`` and clipped at ``clip_sd`` robust standard deviations (0: not clipped,
+    :func:`clipped_detail`); that footprint; and each pixel's taxicab distance to the outside (pixels).
 
     One distance transform gives the footprint less the margin and any core less more (the planar search's
     window) at once; as binary erosions they cost ten times more."""
@@ -87,7 +88,22 @@ def footprint_detail(
     margin_px = max(int(round(margin_mm / pixel_mm)), 0)
     inside = ndimage.distance_transform_cdt(np.pad(footprint, 1), metric="taxicab")[1:-1, 1:-1]
     mask = inside > margin_px
-    return high_pass(np.nan_to_num(values), mask, high_pass_mm / pixel_mm), mask, inside
+    detail = high_pass(np.nan_to_num(values), mask, high_pass_mm / pixel_mm)
+    return clipped_detail(detail, mask, clip_sd), mask, inside
+
+
+def clipped_detail(detail: FloatImage, mask: BoolImage, clip_sd: float) -> FloatImage:
+    """``detail`` clipped at ``clip_sd`` robust standard deviations (1.4826 x its median absolute deviation
+    inside ``mask``); as it is where ``clip_sd`` is 0 or the detail is flat.
+
+    A correlation is a sum over pixels: one element of large detail (a pellet, a crust, a pit, a cud)
+    can outweigh the many small ones a die leaves everywhere, and a wrong pose that lays one such element
+    on another can outscore the right one."""
+    if clip_sd <= 0 or not mask.any():
+        return detail
+    inside = detail[mask]
+    limit = clip_sd * 1.4826 * float(np.median(np.abs(inside - np.median(inside))))
+    return np.clip(detail, -limit, limit) if limit > 0 else detail
 
 
 def polar_log_spectrum(image: FloatImage, n_angles: int = 360, r_min_px: int = 3) -> FloatImage:
@@ -292,10 +308,11 @@ class ReliefImage:
         *,
         high_pass_mm: float = 0.8,
         margin_mm: float = 0.5,
+        clip_sd: float = 0.0,
         n_angles: int = 360,
     ) -> ReliefImage:
         """From a centred square height grid (NaN where there is no surface)."""
-        detail, mask, inside = footprint_detail(values, pixel_mm, high_pass_mm, margin_mm)
+        detail, mask, inside = footprint_detail(values, pixel_mm, high_pass_mm, margin_mm, clip_sd)
         margin_px = max(int(round(margin_mm / pixel_mm)), 0)
         window = ndimage.gaussian_filter((inside > 2 * margin_px).astype(np.float64), max(margin_px, 1))
         return cls(detail, mask, pixel_mm, polar_log_spectrum(detail * window, n_angles=n_angles))
