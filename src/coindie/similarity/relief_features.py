@@ -45,6 +45,7 @@ from coindie.errors import ParameterError
 from coindie.params import Configurable, Rule, param
 from coindie.preprocess.canonical import CanonicalFrame, canonical_frame
 from coindie.preprocess.heightmap import HeightMap, height_map
+from coindie.registration.relief_search import clipped_detail
 from coindie.scan import Scan
 
 #: The features, in the order of :func:`relief_features`' vector.
@@ -246,15 +247,9 @@ def _bands(
 
 
 def _clipped(bands: tuple[FloatArray, ...], mask: BoolArray, clip_sd: float) -> tuple[FloatArray, ...]:
-    """Each band clipped at ``clip_sd`` robust standard deviations of its values inside ``mask``."""
-    if clip_sd <= 0:
-        return bands
-    clipped = []
-    for band in bands:
-        inside = band[mask]
-        limit = clip_sd * 1.4826 * float(np.median(np.abs(inside - np.median(inside))))
-        clipped.append(np.clip(band, -limit, limit) if limit > _EPS else band)
-    return tuple(clipped)
+    """Each band clipped at ``clip_sd`` robust standard deviations of its values inside ``mask`` (the
+    registration's own clip of its relief images)."""
+    return tuple(clipped_detail(band, mask, clip_sd) for band in bands)
 
 
 def _ncc(a: FloatArray, b: FloatArray, mask: BoolArray) -> float:
