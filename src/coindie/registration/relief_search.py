@@ -39,7 +39,7 @@ from functools import cached_property, lru_cache
 
 import numpy as np
 from numpy.typing import NDArray
-from scipy import fft, ndimage, sparse
+from scipy import fft, ndimage, sparse, stats
 
 from coindie.caches import LRUCache
 
@@ -101,8 +101,7 @@ def clipped_detail(detail: FloatImage, mask: BoolImage, clip_sd: float) -> Float
     on another can outscore the right one."""
     if clip_sd <= 0 or not mask.any():
         return detail
-    inside = detail[mask]
-    limit = clip_sd * 1.4826 * float(np.median(np.abs(inside - np.median(inside))))
+    limit = clip_sd * float(stats.median_abs_deviation(detail[mask], axis=None, scale="normal"))
     return np.clip(detail, -limit, limit) if limit > 0 else detail
 
 
