@@ -66,6 +66,11 @@ def test_relief_recovers_the_true_transforms_and_icp_alone_does_not(hoard, tmp_p
     relief = [r for r in rows if r["method"] == "relief"]
     assert all(r["success"] for r in relief)
     assert max(float(r["sre"]) for r in relief) < 0.02  # SRE x 1000 < 20
+    # the faces' own plane: laid within a tenth of a degree and 0.05 mm; ICP from a turn is not
+    assert max(float(r["twist_error_deg"]) for r in relief) < 0.1
+    assert max(float(r["planar_error_mm"]) for r in relief) < 0.05
+    assert summary["relief"]["planar_success"] == 1.0
+    assert summary["icp"]["planar_success"] < 1.0
     assert summary["relief"]["All"] < 20.0
     # ICP from a start turned by up to 180 degrees is far off: the benchmark must see it.
     assert summary["icp"]["All"] > 5 * summary["relief"]["All"]

@@ -24,7 +24,12 @@ from coindie.registration.base import (
 from coindie.registration.compose import Refined
 from coindie.registration.features import FPFH, FeatureExtractor, FeatureRegistration, MutualNN
 from coindie.registration.icp import PointToPlaneICP, point_to_plane_icp
-from coindie.registration.metrics import rotation_error_deg, scaled_registration_error, translation_error_mm
+from coindie.registration.metrics import (
+    planar_errors,
+    rotation_error_deg,
+    scaled_registration_error,
+    translation_error_mm,
+)
 from coindie.registration.patch_icp import PatchICP
 from coindie.registration.quality import Acceptance
 from coindie.registration.random_search import RandomSearch
@@ -57,6 +62,7 @@ __all__ = [
     "list_methods",
     "method_info",
     "param",
+    "planar_errors",
     "point_to_plane_icp",
     "register_method",
     "rotation_error_deg",
