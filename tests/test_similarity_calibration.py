@@ -6,9 +6,12 @@ import numpy as np
 import pytest
 
 from coindie.similarity.calibration import (
+    MIN_SEPARATION,
     MIXTURE_THRESHOLD,
+    OVERRULE_SEPARATION,
     calibrate_hoard,
     calibrated_probabilities,
+    calibrated_side,
     log_odds,
 )
 
@@ -148,6 +151,37 @@ def test_a_scorer_from_other_scans_vetoes_a_split_that_the_hoard_can_still_have(
     for veto in (True, False):
         refused = calibrate_hoard(crowded, scorer_veto=veto)
         assert not refused.separates and not refused.vetoed and "more than 50%" in refused.message
+
+
+def test_once_the_pulls_are_off_a_split_that_is_not_clear_is_asked_of_the_hoards_clusters() -> None:
+    """A murky side's split, vetoed by the scorer, far apart (not designs) but wide: Ashman's D between 2 and
+    3 (the blind generator's hard-34 reverses once the pulls were off: 2.98, 9.8 log-odds apart). Before
+    the pulls are off such a split is not asked (only a clear one is); after, it is. A close split (designs)
+    is not asked either way, and neither is one below D 2."""
+    rng = np.random.default_rng(34)
+    same_die = rng.random(780) < 0.17  # worn, crusted same-die pairs: a wide, heavy-tailed population
+    z = np.where(same_die, -8.0 + 4.0 * rng.standard_t(3, 780), rng.normal(-14.5, 1.6, 780))
+    probabilities = 1.0 / (1.0 + np.exp(-z))
+    first = calibrate_hoard(probabilities)
+    assert MIN_SEPARATION <= first.separation < OVERRULE_SEPARATION, first.separation
+    assert not first.separates and not first.vetoed
+    pulls_off = calibrate_hoard(probabilities, overrule_separation=MIN_SEPARATION)
+    assert not pulls_off.separates and pulls_off.vetoed and "unless" in pulls_off.message
+    # calibrated_side asks it once each face's pull is off (``across``), not before
+    faces = [f"L{k:04d}D" for k in range(40)]
+    i, j = np.triu_indices(40, k=1)
+    sources, targets = [faces[a] for a in i], [faces[b] for b in j]
+    valid = np.ones(len(i), dtype=bool)
+    one_cluster_each = {face: k for k, face in enumerate(faces)}
+    _, before = calibrated_side(probabilities, valid, sources, targets)
+    _, after = calibrated_side(probabilities, valid, sources, targets, across=one_cluster_each)
+    assert not before.vetoed and after.vetoed
+    # two designs: as wide a split, but the components close; and a split that is no split (D < 2)
+    close, _ = _mixture(0.3, 780, seed=35, same=(-15.0, 1.2), different=(-18.0, 0.6))
+    blurred, _ = _mixture(0.17, 780, seed=35, same=(-11.0, 3.0), different=(-14.5, 1.6))
+    for probabilities in (close, blurred):
+        calibration = calibrate_hoard(probabilities, overrule_separation=MIN_SEPARATION)
+        assert not calibration.separates and not calibration.vetoed, calibration.message
 
 
 def test_em_started_far_from_another_scanners_scores_still_finds_its_same_die_pairs() -> None:

@@ -39,7 +39,8 @@ CLEAR_SILHOUETTE = 0.6
 #: In the second pass, the silhouette at or above which the clusters of the hoard's own mixture (the
 #: scorer's veto set aside, each face's pull taken off) are kept. Below the first pass's gate: there the
 #: mixture of raw scores may split kinds of different-die pairs, and its clusters must stand out as the
-#: scorer's would; here the pulls are off and the split is already clear (Ashman's D at least 3). Chosen on
+#: scorer's would; here the pulls are off and the split stands (Ashman's D at least 2, :data:`coindie.
+#: similarity.calibration.OVERRULE_SEPARATION_AFTER_PULLS`; 3 before stop 51). Chosen on
 #: the independent generator's hard hoards of seeds 1-3, whose second-pass mixtures stood at 0.47-0.54 and
 #: gave FMI 0.84-0.99 on those sides, against 0.35-0.54 with the veto; checked on seed 4 and on coindie's
 #: own all-hard and riedones hoards, none of which had a side in between (BENCHMARK.md, "Relays, and the
@@ -121,7 +122,8 @@ def cluster_twice(
     six all-hard hoards of coindie's own generator, three reverses were vetoed clear splits whose clusters
     stood out (0.69-0.77): FMI 0.946 -> 0.950, 0.913 -> 0.953 and 0.909 -> 0.931 for the hoards; the vetoed
     splits that are not clear (:data:`coindie.similarity.calibration.OVERRULE_SEPARATION`) are not tried
-    (BENCHMARK.md, "An independent generator")."""
+    in the first pass (BENCHMARK.md, "An independent generator"); in the second, every split is
+    (:data:`coindie.similarity.calibration.OVERRULE_SEPARATION_AFTER_PULLS`)."""
     graph = calibrated_graph(None)
     params = method_params(method, measure=FIRST_MEASURE)
     choice, first, clear = _first_pass(graph, method, params)

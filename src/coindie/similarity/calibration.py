@@ -32,8 +32,9 @@ kept and :attr:`HoardCalibration.message` says so in words, with the numbers, fo
 The last test is the scorer's own judgement, and a scorer's sense of scale comes from its training hoards:
 on another scanner the same-die pairs can all fall below log-odds 0 and still stand apart from the rest
 (a coarse, noisy scanner of an independent generator: upper component -5.1 ± 3.3 against -16.2 ± 1.4).
-Where only that test fails and the split is clear (Ashman's D at least :data:`OVERRULE_SEPARATION`, the
-upper component at least :data:`OVERRULE_MIN_GAP` log-odds above the other),
+Where only that test fails and the split is clear (Ashman's D at least :data:`OVERRULE_SEPARATION`, or
+any split once each face's pull is off, :data:`OVERRULE_SEPARATION_AFTER_PULLS`; the upper component at
+least :data:`OVERRULE_MIN_GAP` log-odds above the other),
 :attr:`HoardCalibration.vetoed` says so, and ``calibrate_hoard(..., scorer_veto=False)`` gives the
 mixture's calibration all the same; whether to trust it is left to the hoard's own clusters
 (:func:`coindie.clustering.second_pass.cluster_twice`). Unless pairs the scorer judges same-die stand
@@ -63,6 +64,15 @@ MIN_SEPARATION = 2.0
 #: kept (D 3.2-3.9) and those of the independent generator's coarse and two-scanner hoards (4.0-5.5)
 #: held (BENCHMARK.md, "An independent generator").
 OVERRULE_SEPARATION = 3.0
+#: The same, once each face's pull is taken off (the second pass, :func:`calibrated_side` with ``across``):
+#: a split at all (:data:`MIN_SEPARATION`). The pulls were what made a murky hoard's split unclear; once they
+#: are off, what remains between the components is the dies, and the split is still only asked, its
+#: clusters kept where they stand out (:data:`coindie.clustering.second_pass.OVERRULE_AFTER_PULLS_SILHOUETTE`)
+#: and its components far enough apart not to be designs (:data:`OVERRULE_MIN_GAP`). On fresh hoards of the
+#: blind generator's hard kind (seed 34), two sides' second splits stood at D 2.98 and 2.79, a hair below
+#: 3: their scorer's own probabilities, which no cut of the consensus reads, gave FMI 0.696 and 0.685, the
+#: split's clusters (silhouettes 0.64) 0.954 and 0.932 (BENCHMARK.md, "Knife edges").
+OVERRULE_SEPARATION_AFTER_PULLS = MIN_SEPARATION
 #: Log-odds by which the upper component must stand above the other for the hoard's clusters to be asked
 #: to overrule the scorer's veto (a likelihood ratio of e^5.5, about 250). A scanner unlike the scorer's
 #: training scans lowers every same-die score but leaves them far above the rest: 7.8-17.5 on the vetoed
@@ -120,10 +130,10 @@ class HoardCalibration:
     ``separation`` Ashman's D on the two scales; ``refused`` the pairs whose registration was refused (no
     pose), which the mixture does not see; ``vetoed``: the scores do not separate only because the
     scorer judges the upper component's typical pair different-die, and the mixture is otherwise a clear
-    split (Ashman's D at least :data:`OVERRULE_SEPARATION`, the components at least
-    :data:`OVERRULE_MIN_GAP` apart); ``scorer_holds``: the scores do not separate
-    as a mixture, but pairs the scorer judges same-die stand apart above the mixture's upper component
-    (pairs of one design: :func:`_dies_above`), and its own probabilities are kept with its veto;
+    split (Ashman's D at least :data:`OVERRULE_SEPARATION`, or the ``overrule_separation`` it was fitted
+    with; the components at least :data:`OVERRULE_MIN_GAP` apart); ``scorer_holds``: the scores do not
+    separate as a mixture, but pairs the scorer judges same-die stand apart above the mixture's upper
+    component (pairs of one design: :func:`_dies_above`), and its own probabilities are kept with its veto;
     ``apart``: where such pairs stand apart above the upper component but the scorer judges them
     different-die all the same, their number, lowest and highest log-odds and the empty band's width in
     scales (the upper component is not the dies, and those pairs are for a reviewer to look at).
@@ -193,6 +203,7 @@ def calibrate_hoard(
     what: str = "same-side pairs",
     max_same_share: float = MAX_SAME_SHARE,
     scorer_veto: bool = True,
+    overrule_separation: float = OVERRULE_SEPARATION,
 ) -> HoardCalibration:
     """Fit the two populations of a hoard's scored pairs (``probabilities`` of the pairs whose
     registration found a pose; ``refused`` the others). ``prior``: the scorer's training populations
@@ -201,7 +212,10 @@ def calibrate_hoard(
     ``max_same_share``: the largest plausible same-die share (:data:`MAX_SAME_SHARE` for every pair of
     a side, :data:`MAX_SAME_SHARE_CANDIDATES` for pairs planned by candidate search).
     ``scorer_veto``: whether an upper component whose typical pair the scorer judges different-die is
-    refused (the default); False keeps the mixture where it is otherwise a split."""
+    refused (the default); False keeps the mixture where it is otherwise a split.
+    ``overrule_separation``: the Ashman's D from which a split the scorer vetoes is :attr:`HoardCalibration.
+    vetoed` (asked of the hoard's clusters), :data:`OVERRULE_SEPARATION` or, once each face's pull is off,
+    :data:`OVERRULE_SEPARATION_AFTER_PULLS`."""
     z = log_odds(probabilities).ravel()
     total = len(z) + refused
     if refused < 0:
@@ -247,7 +261,7 @@ def calibrate_hoard(
             z, refused, separation, message, share, (mean_s, sd_s), (mean_d, sd_d), scorer_holds=True
         )
     if failures:
-        clear = failures == [_VETO] and separation >= OVERRULE_SEPARATION
+        clear = failures == [_VETO] and separation >= overrule_separation
         close = mean_s - mean_d < OVERRULE_MIN_GAP
         alone = clear and not close
         unless = ", unless the clusters of the hoard's own mixture stand out (coindie cluster --auto)"
@@ -283,6 +297,7 @@ def calibrated_probabilities(
     what: str = "same-side pairs",
     max_same_share: float = MAX_SAME_SHARE,
     scorer_veto: bool = True,
+    overrule_separation: float = OVERRULE_SEPARATION,
 ) -> tuple[FloatArray, HoardCalibration]:
     """The hoard-calibrated probability of each pair of one side (0 where the registration was refused,
     ``valid`` False), and the calibration."""
@@ -290,7 +305,7 @@ def calibrated_probabilities(
     ok = np.asarray(valid, dtype=bool)
     calibration = calibrate_hoard(
         p[ok], refused=int((~ok).sum()), prior=prior, what=what, max_same_share=max_same_share,
-        scorer_veto=scorer_veto,
+        scorer_veto=scorer_veto, overrule_separation=overrule_separation,
     )  # fmt: skip
     out = np.zeros_like(p)
     out[ok] = calibration.probability(log_odds(p[ok]))
@@ -312,15 +327,18 @@ def calibrated_side(
     """:func:`calibrated_probabilities` of one side's pairs, named by their faces (``sources``,
     ``targets``); with ``across`` (a first clustering, face id -> label), each face's pull on its scores,
     fitted on the pairs across those clusters, is taken off first
-    (:func:`coindie.similarity.face_effects.without_face_effects_across`)."""
+    (:func:`coindie.similarity.face_effects.without_face_effects_across`), and a split the scorer vetoes is
+    asked of the hoard's clusters from :data:`OVERRULE_SEPARATION_AFTER_PULLS`."""
     from coindie.similarity.face_effects import without_face_effects_across
 
     p = np.asarray(probabilities, dtype=np.float64)
     if across is not None and len(p):
         p = without_face_effects_across(p, valid, sources, targets, across)
+    overrule = OVERRULE_SEPARATION if across is None else OVERRULE_SEPARATION_AFTER_PULLS
     return calibrated_probabilities(
-        p, valid, prior=prior, what=what, max_same_share=max_same_share, scorer_veto=scorer_veto
-    )
+        p, valid, prior=prior, what=what, max_same_share=max_same_share, scorer_veto=scorer_veto,
+        overrule_separation=overrule,
+    )  # fmt: skip
 
 
 #: The scorer's veto on a mixture (:func:`calibrate_hoard`): its typical member is judged different-die by
