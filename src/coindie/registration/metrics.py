@@ -14,7 +14,11 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike
 
-from coindie.transforms import inverse  # noqa: F401  (registration/speed.py imports it from here)
+from coindie.registration.clouds import Plane
+from coindie.transforms import (
+    apply,
+    inverse,  # noqa: F401  (registration/speed.py imports it from here)
+)
 
 
 def scaled_registration_error(points_source: ArrayLike, T_true: ArrayLike, T_estimated: ArrayLike) -> float:
@@ -53,20 +57,17 @@ def planar_errors(points_source: ArrayLike, T_true: ArrayLike, T_estimated: Arra
     """The error of ``T_estimated`` in the face's own plane: (turn about the face's normal in degrees,
     median in-plane displacement of the source points in mm).
 
-    The plane is the best-fit plane of the source points placed by ``T_true`` (its normal the direction of
-    least spread); the turn is the twist of the rotation ``R_estimated R_true^T`` about that normal (its
-    swing, the tilt, is left out); the displacement is each point's ``T_estimated x - T_true x`` with its
-    component along the normal taken off."""
-    x = np.asarray(points_source, dtype=np.float64)
-    A, B = np.asarray(T_true, dtype=np.float64), np.asarray(T_estimated, dtype=np.float64)
-    true = x @ A[:3, :3].T + A[:3, 3]
-    estimated = x @ B[:3, :3].T + B[:3, 3]
-    centred = true - true.mean(axis=0)
-    normal = np.linalg.svd(centred, full_matrices=False)[2][2]
-    moved = estimated - true
-    in_plane = moved - np.outer(moved @ normal, normal)
+    The plane is the best-fit plane of the source points placed by ``T_true`` (:meth:`coindie.registration.
+    clouds.Plane.fit`: its normal the direction of least spread); the turn is the twist of the rotation
+    ``R_estimated R_true^T`` about that normal (its swing, the tilt, is left out); the displacement is each
+    point's ``T_estimated x - T_true x`` with its component along the normal taken off."""
     from scipy.spatial.transform import Rotation
 
+    A, B = np.asarray(T_true, dtype=np.float64), np.asarray(T_estimated, dtype=np.float64)
+    true, estimated = apply(A, points_source), apply(B, points_source)
+    normal = Plane.fit(true).up
+    moved = estimated - true
+    in_plane = moved - np.outer(moved @ normal, normal)
     # swing-twist decomposition: the twist about n keeps the quaternion's vector part along n
     *vector, w = Rotation.from_matrix(B[:3, :3] @ A[:3, :3].T).as_quat()
     twist = 2.0 * np.degrees(np.arctan2(abs(float(np.dot(vector, normal))), abs(w)))
